@@ -1,0 +1,55 @@
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "core/scene.h"
+#include "core/vdb_import.h"
+#include "core/vdb_reader.h"
+
+namespace eikon {
+namespace {
+
+// The density grid's voxel size, read from metadata only (no voxel data), so that the default
+// material can be stated per voxel like vdb_render's -scatter/-absorb: a cache of any scale then
+// renders with the same look.
+float densityVoxelSize(const std::string& path) {
+    VdbReader reader(path);
+    for (size_t i = 0; i < reader.entries().size(); ++i)
+        if (canonicalFieldFor(reader.entries()[i].name) == "density") {
+            const openvdb::Vec3d vs = reader.readGrid(i)->voxelSize();
+            return float(std::min({vs.x(), vs.y(), vs.z()}));
+        }
+    throw Error(path, "no density grid (looked for the names density, smoke, soot, density.*)");
+}
+
+}  // namespace
+
+Scene defaultSceneForVdb(const std::string& vdbPath) {
+    const float voxel = densityVoxelSize(vdbPath);
+    Scene scene;
+    scene.path = vdbPath;
+    SourceSpec src;
+    src.type = SourceType::Vdb;
+    src.file = vdbPath;
+    src.jsonPath = "(file)";
+    scene.sources.push_back(src);
+
+    MaterialSpec smoke;
+    smoke.name = "smoke";
+    smoke.field = "density";
+    smoke.scattering = glm::vec3(0.3f / voxel);  // per voxel 0.3, as vdb_render's default look
+    smoke.absorption = glm::vec3(0.05f / voxel);
+    scene.materials.push_back(smoke);
+
+    LightSpec sun;
+    sun.type = LightType::Directional;
+    sun.direction = -glm::normalize(glm::vec3(1.0f, 1.0f, 0.5f));
+    sun.intensity = 3.0f;
+    scene.lights.push_back(sun);
+
+    scene.output.name = "render";
+    return scene;
+}
+
+}  // namespace eikon

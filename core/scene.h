@@ -1,0 +1,138 @@
+#pragma once
+// The scene model: what to load, how fields become optics, lights, camera, output and time.
+// Parsed strictly from JSON (see docs/scene-format.md): an unknown key, a wrong type or an
+// out-of-range value is an eikon::Error whose where() is "<file>:<JSON pointer>", for example
+// "smoke.json:/lights/0/intensity". Relative file paths are resolved against the scene's folder.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec2.hpp>
+
+#include "core/bounds.h"
+
+namespace eikon {
+
+struct VolumeSettings {
+    // "bounds": "auto" (the union of the world bounds of every field a material reads) or
+    // {"min": [x,y,z], "max": [x,y,z]} in scene units.
+    bool autoBounds = true;
+    Bounds3 bounds;
+    // "resolution": "auto" (the voxel size of the first field a material reads, at most
+    // max_resolution voxels along any axis) or [nx, ny, nz] or one integer for a cube.
+    bool autoResolution = true;
+    glm::ivec3 resolution{64, 64, 64};
+    int maxResolution = 256;
+};
+
+enum class SourceType { Vdb, VdbSequence, Sphere, Box };
+
+struct SourceSpec {
+    SourceType type = SourceType::Vdb;
+    // Vdb: a file. VdbSequence: any frame of the sequence or a pattern with #### in it.
+    std::string file;
+    // Extra grid names per canonical field, tried before the built-in aliases,
+    // e.g. {"density": ["soot_fine"]}.
+    std::map<std::string, std::vector<std::string>> aliases;
+    // Procedural shapes (Sphere, Box) write `value` into field `field`, with a linear ramp of
+    // width `falloff` (scene units) outside the surface, on a grid of voxel size `voxelSize`.
+    std::string field = "density";
+    glm::vec3 center{0.0f};   // Sphere
+    float radius = 1.0f;      // Sphere
+    glm::vec3 boxMin{-0.5f};  // Box
+    glm::vec3 boxMax{0.5f};   // Box
+    float value = 1.0f;
+    float falloff = 0.0f;
+    float voxelSize = 0.05f;
+    std::string jsonPath;  // e.g. "/sources/2", for messages raised after parsing
+};
+
+// One material maps one scalar field f to optics, linearly per unit of f:
+// absorption α = f·absorption, scattering σ = f·scattering (extinction κ = σ + α, per scene unit),
+// emission = f·emission (radiance per scene unit), refractive index n = 1 + f·(ior − 1).
+// The optics of several materials add up.
+struct MaterialSpec {
+    std::string name;
+    std::string field = "density";
+    glm::vec3 absorption{0.0f};
+    glm::vec3 scattering{0.0f};
+    float g = 0.0f;  // Henyey–Greenstein anisotropy, in (−1, 1)
+    glm::vec3 emission{0.0f};
+    float ior = 1.0f;  // ≥ 1; used by the relighting pipeline
+};
+
+enum class LightType { Point, Directional, Spot };
+
+struct LightSpec {
+    LightType type = LightType::Directional;
+    glm::vec3 position{0.0f};            // Point, Spot
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // Directional, Spot: the way the light travels
+    glm::vec3 color{1.0f};
+    // Directional: irradiance normal to the direction. Point, Spot: radiant intensity (per sr),
+    // so irradiance falls off as intensity / r².
+    float intensity = 1.0f;
+    float coneAngleDeg = 30.0f;     // Spot: half-angle where the light ends
+    float coneSoftnessDeg = 5.0f;   // Spot: width of the smooth edge inside the cone
+};
+
+struct CameraSpec {
+    bool automatic = true;  // "camera": "auto" frames the render volume
+    glm::vec3 position{0.0f, 0.0f, 5.0f};
+    glm::vec3 lookAt{0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float horizontalFovDeg = 45.0f;  // in (0, 180)
+};
+
+struct EnvironmentSpec {
+    glm::vec3 color{0.0f};  // constant background radiance
+};
+
+struct RenderSettings {
+    int width = 640;
+    int height = 480;
+    float stepVoxels = 1.0f;        // view-ray step, in voxels of the render volume
+    float shadowStepVoxels = 3.0f;  // step toward the light
+    float minTransmittance = 1e-3f; // a view ray stops when every channel is below this
+    float exposure = 0.0f;          // stops; the tone map multiplies by 2^exposure
+    std::uint32_t seed = 0;
+};
+
+struct OutputSettings {
+    std::string directory = "out";
+    std::string name = "frame";  // files are <directory>/<name>_<frame 4 digits>.png / .exr
+    bool png = true;
+    bool exr = false;
+};
+
+struct TimeSettings {
+    double fps = 24.0;
+    int frameStart = 0;
+    int frameEnd = 0;  // inclusive
+};
+
+struct Scene {
+    std::string path;  // the file it came from; empty when built in code
+    VolumeSettings volume;
+    std::vector<SourceSpec> sources;
+    std::vector<MaterialSpec> materials;
+    std::vector<LightSpec> lights;
+    CameraSpec camera;
+    EnvironmentSpec environment;
+    RenderSettings render;
+    OutputSettings output;
+    TimeSettings time;
+};
+
+// Reads and validates a scene file. Throws eikon::Error naming the file and JSON path.
+Scene loadScene(const std::string& path);
+// Same, from text; `fileForMessages` is used in errors and to resolve relative paths.
+Scene parseScene(const std::string& jsonText, const std::string& fileForMessages);
+
+// The scene `eikon render cache.vdb` uses: the file as its only source, a grey smoke material on
+// its density, automatic bounds, resolution and camera, one directional light from the
+// upper right front, black background.
+Scene defaultSceneForVdb(const std::string& vdbPath);
+
+}  // namespace eikon

@@ -1,0 +1,26 @@
+#pragma once
+// Turns a scene's sources into fields for a given frame: VDB files once, sequences when the
+// frame's file changes, procedural shapes once. Fields that did not change keep their version,
+// so the GPU upload skips them.
+#include <map>
+#include <string>
+
+#include "core/field_registry.h"
+#include "core/scene.h"
+#include "core/vdb_sequence.h"
+
+namespace eikon {
+
+class SceneSources {
+public:
+    explicit SceneSources(const Scene& scene);
+    // Loads what frame `frame` needs into `fields`. Throws eikon::Error on bad files.
+    void loadFrame(int frame, FieldRegistry& fields);
+
+private:
+    const Scene& scene_;
+    std::map<size_t, VdbSequence> sequences_;    // by source index
+    std::map<size_t, std::string> loadedFile_;   // by source index: what is in the registry
+};
+
+}  // namespace eikon

@@ -1,0 +1,92 @@
+#include "core/vdb_sequence.h"
+
+#include <cctype>
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/log.h"
+
+namespace fs = std::filesystem;
+
+namespace eikon {
+namespace {
+
+// Splits "fluid_data_0007.vdb" into prefix "fluid_data_" and number "0007"; the number is the
+// run of digits right before ".vdb". A "####" run is accepted in its place.
+bool splitFrameName(const std::string& name, std::string& prefix, std::string& number) {
+    const std::string ext = ".vdb";
+    if (name.size() <= ext.size() || name.compare(name.size() - ext.size(), ext.size(), ext) != 0)
+        return false;
+    const std::string stem = name.substr(0, name.size() - ext.size());
+    size_t start = stem.size();
+    const bool hashes = !stem.empty() && stem.back() == '#';
+    while (start > 0 && (hashes ? stem[start - 1] == '#'
+                                : std::isdigit(static_cast<unsigned char>(stem[start - 1]))))
+        --start;
+    if (start == stem.size()) return false;
+    prefix = stem.substr(0, start);
+    number = stem.substr(start);
+    return true;
+}
+
+std::string describeRanges(const std::vector<int>& frames) {
+    std::string out;
+    for (size_t i = 0; i < frames.size();) {
+        size_t j = i;
+        while (j + 1 < frames.size() && frames[j + 1] == frames[j] + 1) ++j;
+        if (!out.empty()) out += ", ";
+        out += std::to_string(frames[i]);
+        if (j > i) out += "-" + std::to_string(frames[j]);
+        i = j + 1;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string VdbSequence::pattern() const {
+    return (fs::path(directory) / (prefix + std::string(std::max(digits, 1), '#') + ".vdb"))
+        .string();
+}
+
+const std::string& VdbSequence::fileForFrame(int frame) const {
+    auto it = frames.upper_bound(frame);
+    if (it == frames.begin()) return it->second;
+    return std::prev(it)->second;
+}
+
+VdbSequence findVdbSequence(const std::string& fileOrPattern) {
+    const fs::path given(fileOrPattern);
+    VdbSequence seq;
+    seq.directory = given.parent_path().empty() ? "." : given.parent_path().string();
+    std::string number;
+    if (!splitFrameName(given.filename().string(), seq.prefix, number))
+        throw Error(fileOrPattern,
+                    "not a frame of a sequence: expected name_####.vdb, name.####.vdb or "
+                    "name####.vdb");
+    std::error_code ec;
+    if (!fs::is_directory(seq.directory, ec))
+        throw Error(fileOrPattern, "folder '" + seq.directory + "' does not exist");
+
+    for (const auto& entry : fs::directory_iterator(seq.directory, ec)) {
+        std::string prefix, digits;
+        if (!entry.is_regular_file() ||
+            !splitFrameName(entry.path().filename().string(), prefix, digits) ||
+            prefix != seq.prefix || digits.front() == '#')
+            continue;
+        // A frame number that does not fit an int is not a frame of ours.
+        if (digits.size() > 9) continue;
+        seq.frames[std::stoi(digits)] = entry.path().string();
+        seq.digits = std::max(seq.digits, int(digits.size()));
+    }
+    if (seq.frames.empty())
+        throw Error(fileOrPattern, "no frames of " + seq.pattern() + " found");
+    for (int f = seq.first(); f <= seq.last(); ++f)
+        if (!seq.frames.count(f)) seq.missing.push_back(f);
+    if (!seq.missing.empty())
+        logWarning(seq.pattern() + ": frames " + describeRanges(seq.missing) +
+                   " are missing; the nearest earlier frame stands in");
+    return seq;
+}
+
+}  // namespace eikon

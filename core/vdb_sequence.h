@@ -1,0 +1,31 @@
+#pragma once
+// Frame sequences of VDB files: name_####.vdb, name.####.vdb and name####.vdb. Gaps are reported
+// (a warning listing the missing frames), never fatal: a missing frame shows the nearest earlier
+// frame that exists.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace eikon {
+
+struct VdbSequence {
+    std::string directory;
+    std::string prefix;  // "fluid_data_" (separator included)
+    int digits = 0;      // zero padding of the frame numbers seen
+    std::map<int, std::string> frames;  // frame -> path
+    std::vector<int> missing;           // frames between the first and last that are absent
+
+    int first() const { return frames.begin()->first; }
+    int last() const { return frames.rbegin()->first; }
+    // The pattern for messages: "dir/fluid_data_####.vdb".
+    std::string pattern() const;
+    // The file for `frame`: itself, or the nearest earlier one when it is missing, or the first
+    // frame when `frame` precedes the sequence.
+    const std::string& fileForFrame(int frame) const;
+};
+
+// `fileOrPattern` is one frame of the sequence ("cache/fluid_data_0001.vdb") or a pattern with
+// #### in place of the number. Throws eikon::Error when no frame is found. Warns about gaps.
+VdbSequence findVdbSequence(const std::string& fileOrPattern);
+
+}  // namespace eikon

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency from Debian 12's archive. Idempotent: apt-get only
+# installs what is missing. Needs root (or sudo).
+set -euo pipefail
+
+PACKAGES=(
+    build-essential cmake pkg-config
+    libopenvdb-dev libopenvdb-tools libnanovdb-dev libboost-iostreams-dev libtbb-dev
+    libopenmesh-dev libeigen3-dev
+    libglm-dev libglfw3-dev libepoxy-dev libegl-dev libgl-dev
+    libegl-mesa0 libgl1-mesa-dri libglx-mesa0 xvfb xauth
+    nlohmann-json3-dev libcli11-dev libpng-dev libopenexr-dev
+    catch2
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install-deps: all ${#PACKAGES[@]} packages present"
+    exit 0
+fi
+
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+echo "install-deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,30 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "sim/clock.h"
+
+using eikon::SimulationClock;
+
+TEST_CASE("clock maps frames to time and picks substeps by CFL", "[clock]") {
+    SimulationClock clock(24.0, 1.0);
+    CHECK(clock.timeOfFrame(48) == Approx(2.0));
+    // speed 48 voxel-units/s, voxel 1, frame 1/24 s: CFL 2 per frame -> 2 substeps at CFL 1.
+    CHECK(clock.substepsFor(48.0, 1.0) == 2);
+    CHECK(clock.substepsFor(47.9, 1.0) == 2);
+    CHECK(clock.substepsFor(24.0, 1.0) == 1);
+    CHECK(clock.substepsFor(0.0, 1.0) == 1);
+    SimulationClock loose(24.0, 5.0);
+    CHECK(loose.substepsFor(240.0, 1.0) == 2);
+}
+
+TEST_CASE("clock rejects bad settings and survives a blow-up", "[clock]") {
+    CHECK_THROWS_AS(SimulationClock(0.0, 1.0), eikon::Error);
+    CHECK_THROWS_AS(SimulationClock(24.0, -1.0), eikon::Error);
+    SimulationClock clock(24.0, 1.0);
+    CHECK_THROWS_AS(clock.substepsFor(std::numeric_limits<double>::infinity(), 1.0), eikon::Error);
+    CHECK_THROWS_AS(clock.substepsFor(std::nan(""), 1.0), eikon::Error);
+    CHECK(clock.substepsFor(1e30, 1.0) == 100000);
+}
