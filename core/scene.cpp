@@ -1,0 +1,501 @@
+// The strict scene parser. The format is documented key by key in docs/scene-format.md; keep the
+// two in step. Every check reports through json::Value / json::Object so that each message
+// carries "<file>:<JSON pointer>" and the expected form.
+#include "core/scene.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "core/field_registry.h"
+#include "core/json_reader.h"
+
+namespace eikon {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json::Object;
+using json::Range;
+using json::Value;
+
+// Limits of the format (docs/scene-format.md). Materials and lights are capped because the GPU
+// stages keep them in fixed-size uniform arrays.
+constexpr std::size_t kMaxMaterials = 4;
+constexpr std::size_t kMaxLights = 4;
+constexpr int kMaxVolumeResolution = 1024;
+constexpr int kMinMaxResolution = 8;
+constexpr int kMaxImageSize = 16384;
+// A procedural source is voxelised at its own voxel size before resampling; this many voxels
+// across is far beyond any render volume and guards against a voxel_size typo (1e-6) that
+// would exhaust memory.
+constexpr double kMaxProceduralVoxelsAcross = 4096.0;
+
+const char* const kVec3Form = "an array of 3 numbers [x, y, z]";
+const char* const kColorForm = "an array of 3 numbers >= 0 [r, g, b]";
+
+std::string formatVec3(const glm::vec3& v) {
+    std::ostringstream out;
+    out << "[" << v.x << ", " << v.y << ", " << v.z << "]";
+    return out.str();
+}
+
+// Materials and procedural sources produce or read one scalar per voxel; velocity and color
+// are vector fields and cannot be.
+std::vector<std::string> scalarFieldNames() {
+    std::vector<std::string> names;
+    for (const std::string& name : canonicalFieldNames()) {
+        if (name != field::kVelocity && name != field::kColor) names.push_back(name);
+    }
+    return names;
+}
+
+glm::vec3 readColor(const Value& value) {
+    return value.vec3(Range::atLeast(0.0));
+}
+
+// Relative paths in a scene are relative to the scene file, so that a scene and its caches can
+// move together.
+std::string resolveAgainst(const fs::path& sceneDirectory, const std::string& file) {
+    const fs::path path(file);
+    if (path.is_absolute() || sceneDirectory.empty()) return path.lexically_normal().string();
+    return (sceneDirectory / path).lexically_normal().string();
+}
+
+// ---- volume ----------------------------------------------------------------------------------
+
+Bounds3 readBounds(const Value& value) {
+    Object object(value, "the volume bounds");
+    Bounds3 bounds;
+    bounds.min = object.required("min", kVec3Form).vec3();
+    bounds.max = object.required("max", kVec3Form).vec3();
+    object.finish();
+    if (!bounds.valid()) {
+        object.failAt("max", "expected max > min on every axis, got min " + formatVec3(bounds.min) +
+                                 " and max " + formatVec3(bounds.max));
+    }
+    return bounds;
+}
+
+void readResolution(const Value& value, VolumeSettings& volume) {
+    const int hi = kMaxVolumeResolution;
+    if (value.isString("auto")) {
+        volume.autoResolution = true;
+    } else if (value.isNumber()) {
+        volume.autoResolution = false;
+        volume.resolution = glm::ivec3(static_cast<int>(value.integer(1, hi)));
+    } else if (value.isArray()) {
+        volume.autoResolution = false;
+        volume.resolution = value.ivec3(1, hi);
+    } else {
+        value.failExpected("\"auto\", an integer in [1, " + std::to_string(hi) +
+                           "] or an array of 3 such integers");
+    }
+}
+
+VolumeSettings readVolume(const Value& value) {
+    Object object(value, "the volume");
+    VolumeSettings volume;
+    if (auto bounds = object.optional("bounds")) {
+        if (bounds->isString("auto")) {
+            volume.autoBounds = true;
+        } else if (bounds->isObject()) {
+            volume.autoBounds = false;
+            volume.bounds = readBounds(*bounds);
+        } else {
+            bounds->failExpected("\"auto\" or an object {\"min\": [x, y, z], \"max\": [x, y, z]}");
+        }
+    }
+    if (auto resolution = object.optional("resolution")) readResolution(*resolution, volume);
+    if (auto maxResolution = object.optional("max_resolution")) {
+        volume.maxResolution =
+            static_cast<int>(maxResolution->integer(kMinMaxResolution, kMaxVolumeResolution));
+    }
+    object.finish();
+    return volume;
+}
+
+// ---- sources ---------------------------------------------------------------------------------
+
+std::map<std::string, std::vector<std::string>> readAliases(const Value& value) {
+    Object object(value, "the alias table");
+    std::map<std::string, std::vector<std::string>> aliases;
+    // Asking for every canonical name makes any other key an "unknown key" with a hint.
+    for (const std::string& canonical : canonicalFieldNames()) {
+        auto names = object.optional(canonical);
+        if (!names) continue;
+        std::vector<std::string>& gridNames = aliases[canonical];
+        for (const Value& name : names->elements("an array of grid names")) {
+            gridNames.push_back(name.nonEmptyString());
+        }
+    }
+    object.finish();
+    return aliases;
+}
+
+void readFileSource(Object& object, const fs::path& sceneDirectory, SourceSpec& source) {
+    const Value file = object.required("file", "the path of a .vdb file");
+    source.file = resolveAgainst(sceneDirectory, file.nonEmptyString());
+    // The #### pattern only means something to a sequence; a plain vdb source would look for a
+    // file literally named with #### in it.
+    if (source.type == SourceType::Vdb && source.file.find('#') != std::string::npos) {
+        file.fail("a file name with #### is a sequence pattern; use \"type\": \"vdb_sequence\"");
+    }
+    if (auto aliases = object.optional("aliases")) source.aliases = readAliases(*aliases);
+}
+
+// The procedural keys shared by sphere and box: which field, what value, how soft, how fine.
+void readProceduralCommon(Object& object, SourceSpec& source) {
+    if (auto field = object.optional("field")) source.field = field->choice(scalarFieldNames());
+    if (auto value = object.optional("value")) source.value = value->floatNumber();
+    if (auto falloff = object.optional("falloff")) {
+        source.falloff = falloff->floatNumber(Range::atLeast(0.0));
+    }
+    if (auto voxelSize = object.optional("voxel_size")) {
+        source.voxelSize = voxelSize->floatNumber(Range::greaterThan(0.0));
+    }
+}
+
+void checkVoxelCount(const Object& object, const SourceSpec& source, float extent) {
+    const double voxelsAcross = static_cast<double>(extent) / source.voxelSize;
+    if (voxelsAcross > kMaxProceduralVoxelsAcross) {
+        std::ostringstream reason;
+        reason << "expected a voxel size that gives at most " << kMaxProceduralVoxelsAcross
+               << " voxels across the shape (extent " << extent << " including falloff), got "
+               << source.voxelSize << " (" << std::ceil(voxelsAcross) << " voxels)";
+        object.failAt("voxel_size", reason.str());
+    }
+}
+
+void readSphereSource(Object& object, SourceSpec& source) {
+    if (auto center = object.optional("center")) source.center = center->vec3();
+    if (auto radius = object.optional("radius")) {
+        source.radius = radius->floatNumber(Range::greaterThan(0.0));
+    }
+    readProceduralCommon(object, source);
+    checkVoxelCount(object, source, 2.0f * (source.radius + source.falloff));
+}
+
+void readBoxSource(Object& object, SourceSpec& source) {
+    if (auto min = object.optional("min")) source.boxMin = min->vec3();
+    if (auto max = object.optional("max")) source.boxMax = max->vec3();
+    readProceduralCommon(object, source);
+    if (!Bounds3{source.boxMin, source.boxMax}.valid()) {
+        object.failAt("max", "expected max > min on every axis, got min " +
+                                 formatVec3(source.boxMin) + " and max " +
+                                 formatVec3(source.boxMax));
+    }
+    const glm::vec3 size = source.boxMax - source.boxMin;
+    const float extent = std::max({size.x, size.y, size.z}) + 2.0f * source.falloff;
+    checkVoxelCount(object, source, extent);
+}
+
+SourceSpec readSource(const Value& value, const fs::path& sceneDirectory) {
+    Object object(value, "a source");
+    SourceSpec source;
+    source.jsonPath = value.pointer();
+    // The type decides which other keys belong, so it is read first.
+    const std::string type =
+        object.required("type", "\"vdb\", \"vdb_sequence\", \"sphere\" or \"box\"")
+            .choice({"vdb", "vdb_sequence", "sphere", "box"});
+    object.setKind("a " + type + " source");
+    if (type == "vdb" || type == "vdb_sequence") {
+        source.type = type == "vdb" ? SourceType::Vdb : SourceType::VdbSequence;
+        readFileSource(object, sceneDirectory, source);
+    } else if (type == "sphere") {
+        source.type = SourceType::Sphere;
+        readSphereSource(object, source);
+    } else {
+        source.type = SourceType::Box;
+        readBoxSource(object, source);
+    }
+    object.finish();
+    return source;
+}
+
+std::vector<SourceSpec> readSources(const Value& value, const fs::path& sceneDirectory) {
+    const std::string form = "a non-empty array of sources";
+    std::vector<SourceSpec> sources;
+    for (const Value& element : value.elements(form)) {
+        sources.push_back(readSource(element, sceneDirectory));
+    }
+    if (sources.empty()) value.failExpected(form);
+    return sources;
+}
+
+// ---- materials -------------------------------------------------------------------------------
+
+MaterialSpec readMaterial(const Value& value) {
+    Object object(value, "a material");
+    MaterialSpec material;
+    material.name = object.required("name", "a non-empty string").nonEmptyString();
+    if (auto field = object.optional("field")) material.field = field->choice(scalarFieldNames());
+    if (auto absorption = object.optional("absorption")) {
+        material.absorption = readColor(*absorption);
+    }
+    if (auto scattering = object.optional("scattering")) {
+        material.scattering = readColor(*scattering);
+    }
+    if (auto g = object.optional("g")) material.g = g->floatNumber(Range::open(-1.0, 1.0));
+    if (auto emission = object.optional("emission")) material.emission = readColor(*emission);
+    if (auto ior = object.optional("ior")) material.ior = ior->floatNumber(Range::atLeast(1.0));
+    object.finish();
+    return material;
+}
+
+std::vector<MaterialSpec> readMaterials(const Value& value) {
+    const std::string form = "a non-empty array of materials";
+    std::vector<MaterialSpec> materials;
+    const std::vector<Value> elements = value.elements(form, kMaxMaterials);
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        MaterialSpec material = readMaterial(elements[i]);
+        // Names identify materials to animation tracks and messages, so they must be unique.
+        for (std::size_t j = 0; j < materials.size(); ++j) {
+            if (materials[j].name == material.name) {
+                elements[i].child("name").fail("duplicate material name \"" + material.name +
+                                               "\" (already used by " + elements[j].pointer() +
+                                               ")");
+            }
+        }
+        materials.push_back(std::move(material));
+    }
+    if (materials.empty()) value.failExpected(form);
+    return materials;
+}
+
+// ---- lights ----------------------------------------------------------------------------------
+
+glm::vec3 readDirection(const Value& value) {
+    // In double: the squares of large float components would overflow a float length.
+    const glm::dvec3 direction(value.vec3());
+    const double length = glm::length(direction);
+    if (!(length > 0.0)) value.failExpected("a non-zero direction [x, y, z]");
+    return glm::vec3(direction / length);
+}
+
+void readSpotCone(Object& object, LightSpec& light) {
+    if (auto angle = object.optional("cone_angle_deg")) {
+        light.coneAngleDeg = angle->floatNumber(Range::openClosed(0.0, 90.0));
+    }
+    // The default softness must not exceed a narrow cone the user asked for.
+    light.coneSoftnessDeg = std::min(light.coneSoftnessDeg, light.coneAngleDeg);
+    if (auto softness = object.optional("cone_softness_deg")) {
+        const double limit = light.coneAngleDeg;
+        if (softness->isNumber() && softness->json().get<double>() > limit) {
+            std::ostringstream form;
+            form << "a number in [0, " << limit << "] (at most cone_angle_deg)";
+            softness->failExpected(form.str());
+        }
+        light.coneSoftnessDeg = softness->floatNumber(Range::closed(0.0, limit));
+    }
+}
+
+LightSpec readLight(const Value& value) {
+    Object object(value, "a light");
+    LightSpec light;
+    const std::string type = object.required("type", "\"point\", \"directional\" or \"spot\"")
+                                 .choice({"point", "directional", "spot"});
+    object.setKind("a " + type + " light");
+    if (type == "directional") {
+        light.type = LightType::Directional;
+        object.forbid("position",
+                      "a directional light has no position (it shines from infinitely far along "
+                      "'direction'); remove 'position' or use \"type\": \"point\" or \"spot\"");
+    } else {
+        light.type = type == "point" ? LightType::Point : LightType::Spot;
+        light.position = object.required("position", kVec3Form).vec3();
+    }
+    if (type == "point") {
+        object.forbid("direction",
+                      "a point light shines in every direction; remove 'direction' or use "
+                      "\"type\": \"spot\"");
+    } else {
+        light.direction = readDirection(object.required("direction", "a non-zero [x, y, z]"));
+    }
+    if (auto color = object.optional("color")) light.color = readColor(*color);
+    if (auto intensity = object.optional("intensity")) {
+        light.intensity = intensity->floatNumber(Range::atLeast(0.0));
+    }
+    if (type == "spot") {
+        readSpotCone(object, light);
+    } else {
+        const std::string onlySpot = " applies only to spot lights (\"type\": \"spot\")";
+        object.forbid("cone_angle_deg", "'cone_angle_deg'" + onlySpot);
+        object.forbid("cone_softness_deg", "'cone_softness_deg'" + onlySpot);
+    }
+    object.finish();
+    return light;
+}
+
+std::vector<LightSpec> readLights(const Value& value) {
+    std::vector<LightSpec> lights;
+    for (const Value& element : value.elements("an array of lights", kMaxLights)) {
+        lights.push_back(readLight(element));
+    }
+    return lights;
+}
+
+// ---- camera, environment, render, output, time ----------------------------------------------
+
+void checkCameraFrame(const Object& object, const CameraSpec& camera) {
+    const glm::vec3 view = camera.lookAt - camera.position;
+    if (!(glm::length(view) > 0.0f)) {
+        object.failAt("look_at", "expected a point different from position " +
+                                     formatVec3(camera.position) + ", got the same point");
+    }
+    const float upLength = glm::length(camera.up);
+    const float sine = upLength > 0.0f
+                           ? glm::length(glm::cross(glm::normalize(view), camera.up / upLength))
+                           : 0.0f;
+    // Below ~0.06 degrees the camera's right vector is numerically meaningless.
+    if (!(sine > 1e-3f)) {
+        const std::string which = object.has("up") ? "" : " (the default)";
+        object.failAt("up", "expected an up vector not parallel to the view direction " +
+                                formatVec3(glm::normalize(view)) + ", got " +
+                                formatVec3(camera.up) + which);
+    }
+}
+
+CameraSpec readCamera(const Value& value) {
+    CameraSpec camera;
+    if (value.isString("auto")) return camera;
+    if (!value.isObject()) {
+        value.failExpected("\"auto\" or an object with position, look_at, up, horizontal_fov_deg");
+    }
+    Object object(value, "the camera");
+    camera.automatic = false;
+    if (auto position = object.optional("position")) camera.position = position->vec3();
+    if (auto lookAt = object.optional("look_at")) camera.lookAt = lookAt->vec3();
+    if (auto up = object.optional("up")) camera.up = up->vec3();
+    if (auto fov = object.optional("horizontal_fov_deg")) {
+        camera.horizontalFovDeg = fov->floatNumber(Range::open(0.0, 180.0));
+    }
+    object.finish();
+    checkCameraFrame(object, camera);
+    return camera;
+}
+
+EnvironmentSpec readEnvironment(const Value& value) {
+    Object object(value, "the environment");
+    EnvironmentSpec environment;
+    if (auto color = object.optional("color")) environment.color = readColor(*color);
+    object.finish();
+    return environment;
+}
+
+RenderSettings readRender(const Value& value) {
+    Object object(value, "the render settings");
+    RenderSettings render;
+    if (auto width = object.optional("width")) {
+        render.width = static_cast<int>(width->integer(1, kMaxImageSize));
+    }
+    if (auto height = object.optional("height")) {
+        render.height = static_cast<int>(height->integer(1, kMaxImageSize));
+    }
+    if (auto step = object.optional("step_voxels")) {
+        render.stepVoxels = step->floatNumber(Range::greaterThan(0.0));
+    }
+    if (auto step = object.optional("shadow_step_voxels")) {
+        render.shadowStepVoxels = step->floatNumber(Range::greaterThan(0.0));
+    }
+    if (auto cutoff = object.optional("min_transmittance")) {
+        render.minTransmittance = cutoff->floatNumber(Range::closedOpen(0.0, 1.0));
+    }
+    if (auto exposure = object.optional("exposure")) render.exposure = exposure->floatNumber();
+    if (auto seed = object.optional("seed")) {
+        render.seed =
+            static_cast<std::uint32_t>(seed->integer(0, std::numeric_limits<std::uint32_t>::max()));
+    }
+    object.finish();
+    return render;
+}
+
+OutputSettings readOutput(const Value& value) {
+    Object object(value, "the output settings");
+    OutputSettings output;
+    if (auto directory = object.optional("directory")) {
+        output.directory = directory->nonEmptyString();
+    }
+    if (auto name = object.optional("name")) {
+        output.name = name->nonEmptyString();
+        // The name is a file name prefix; folders belong in "directory".
+        if (output.name.find_first_of("/\\") != std::string::npos) {
+            name->failExpected("a file name without '/' or '\\' (put folders in \"directory\")");
+        }
+    }
+    if (auto png = object.optional("png")) output.png = png->boolean();
+    if (auto exr = object.optional("exr")) output.exr = exr->boolean();
+    object.finish();
+    return output;
+}
+
+TimeSettings readTime(const Value& value) {
+    Object object(value, "the time settings");
+    TimeSettings time;
+    const std::int64_t maxFrame = std::numeric_limits<int>::max();
+    if (auto fps = object.optional("fps")) time.fps = fps->number(Range::greaterThan(0.0));
+    if (auto start = object.optional("frame_start")) {
+        time.frameStart = static_cast<int>(start->integer(0, maxFrame));
+    }
+    // A scene that only moves its start renders that one frame.
+    time.frameEnd = time.frameStart;
+    if (auto end = object.optional("frame_end")) {
+        time.frameEnd = static_cast<int>(end->integer(0, maxFrame));
+        if (time.frameEnd < time.frameStart) {
+            end->failExpected("an integer >= frame_start (" + std::to_string(time.frameStart) +
+                              ")");
+        }
+    }
+    object.finish();
+    return time;
+}
+
+Scene readScene(const Value& root, const std::string& file) {
+    Object object(root, "the scene");
+    Scene scene;
+    scene.path = file;
+    const fs::path sceneDirectory = fs::path(file).parent_path();
+    if (auto volume = object.optional("volume")) scene.volume = readVolume(*volume);
+    scene.sources =
+        readSources(object.required("sources", "a non-empty array of sources"), sceneDirectory);
+    scene.materials = readMaterials(object.required("materials", "a non-empty array of materials"));
+    if (auto lights = object.optional("lights")) scene.lights = readLights(*lights);
+    if (auto camera = object.optional("camera")) scene.camera = readCamera(*camera);
+    if (auto environment = object.optional("environment")) {
+        scene.environment = readEnvironment(*environment);
+    }
+    if (auto render = object.optional("render")) scene.render = readRender(*render);
+    if (auto output = object.optional("output")) scene.output = readOutput(*output);
+    if (auto time = object.optional("time")) scene.time = readTime(*time);
+    object.finish();
+    return scene;
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& jsonText, const std::string& fileForMessages) {
+    const json::Json document = json::parseDocument(jsonText, fileForMessages);
+    return readScene(Value(document, fileForMessages, ""), fileForMessages);
+}
+
+Scene loadScene(const std::string& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw Error(path, "scene file not found");
+    if (fs::is_directory(path, ec)) throw Error(path, "is a folder, expected a scene file (.json)");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path, std::string("cannot open the scene file: ") + std::strerror(errno));
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throw Error(path, "cannot read the scene file");
+    return parseScene(text, path);
+}
+
+}  // namespace eikon

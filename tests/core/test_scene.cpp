@@ -1,0 +1,659 @@
+// The strict scene parser: the shipped scenes and the documented example parse, defaults apply,
+// and every class of mistake gives an error with the JSON pointer and the expected form.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "core/json_reader.h"
+#include "core/scene.h"
+
+namespace fs = std::filesystem;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// Smallest valid scene body; tests append the keys they exercise.
+const std::string kMinimalBody = R"("sources": [{"type": "sphere"}], "materials": [{"name": "m"}])";
+
+std::string sceneWith(const std::string& extraKeys) {
+    return "{" + kMinimalBody + (extraKeys.empty() ? "" : ", " + extraKeys) + "}";
+}
+
+struct Failure {
+    std::string where;
+    std::string reason;
+    std::string message;
+};
+
+// Parses `text` as smoke.json and returns the error it must raise.
+Failure failureOf(const std::string& text) {
+    try {
+        eikon::parseScene(text, "smoke.json");
+    } catch (const eikon::Error& e) {
+        return {e.where(), e.reason(), e.what()};
+    }
+    FAIL("expected an eikon::Error for: " << text);
+    return {};
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The first ```json block after the "## Complete example" heading of the format's documentation.
+std::string documentedExample() {
+    const std::string doc = readFile(fs::path(EIKON_SOURCE_DIR) / "docs" / "scene-format.md");
+    const std::size_t section = doc.find("## Complete example");
+    REQUIRE(section != std::string::npos);
+    const std::string fence = "```json\n";
+    const std::size_t begin = doc.find(fence, section);
+    REQUIRE(begin != std::string::npos);
+    const std::size_t end = doc.find("```", begin + fence.size());
+    REQUIRE(end != std::string::npos);
+    return doc.substr(begin + fence.size(), end - begin - fence.size());
+}
+
+}  // namespace
+
+TEST_CASE("every scene in data/scenes parses", "[scene]") {
+    const fs::path folder = fs::path(EIKON_SOURCE_DIR) / "data" / "scenes";
+    int parsed = 0;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        if (entry.path().extension() != ".json") continue;
+        INFO(entry.path().string());
+        eikon::Scene scene;
+        REQUIRE_NOTHROW(scene = eikon::loadScene(entry.path().string()));
+        CHECK(scene.path == entry.path().string());
+        CHECK_FALSE(scene.sources.empty());
+        CHECK_FALSE(scene.materials.empty());
+        // VDB paths are resolved against the scene's folder, so they name real files.
+        for (const eikon::SourceSpec& source : scene.sources) {
+            if (source.type == eikon::SourceType::Vdb ||
+                source.type == eikon::SourceType::VdbSequence) {
+                CHECK(fs::exists(source.file));
+            }
+        }
+        ++parsed;
+    }
+    CHECK(parsed >= 3);
+}
+
+TEST_CASE("the shipped scenes hold what they say", "[scene]") {
+    const fs::path folder = fs::path(EIKON_SOURCE_DIR) / "data" / "scenes";
+
+    SECTION("homogeneous cube") {
+        const eikon::Scene scene = eikon::loadScene((folder / "homogeneous_cube.json").string());
+        REQUIRE(scene.sources.size() == 1);
+        CHECK(scene.sources[0].type == eikon::SourceType::Box);
+        CHECK(scene.sources[0].boxMin == glm::vec3(-1.0f));
+        CHECK(scene.sources[0].boxMax == glm::vec3(1.0f));
+        CHECK(scene.materials[0].name == "absorber");
+        CHECK(scene.materials[0].absorption == glm::vec3(0.5f));
+        CHECK(scene.materials[0].scattering == glm::vec3(0.0f));
+        CHECK(scene.lights.empty());
+        CHECK_FALSE(scene.camera.automatic);
+        CHECK(scene.camera.position == glm::vec3(0.0f, 0.0f, 6.0f));
+        CHECK(scene.environment.color == glm::vec3(1.0f));
+        CHECK(scene.render.width == 160);
+        CHECK(scene.render.height == 120);
+        CHECK(scene.output.png);
+        CHECK(scene.output.exr);
+    }
+    SECTION("houdini smoke: the light travels away from vdb_render's -light 1,1,0.5") {
+        const eikon::Scene scene = eikon::loadScene((folder / "houdini_smoke.json").string());
+        REQUIRE(scene.lights.size() == 1);
+        const glm::vec3 d = scene.lights[0].direction;
+        CHECK(d.x == Approx(-2.0 / 3.0).margin(1e-6));
+        CHECK(d.y == Approx(-2.0 / 3.0).margin(1e-6));
+        CHECK(d.z == Approx(-1.0 / 3.0).margin(1e-6));
+        CHECK(scene.volume.autoBounds);
+        CHECK(scene.volume.autoResolution);
+        CHECK(scene.materials[0].scattering.x == Approx(0.3 / 0.476).epsilon(1e-5));
+        CHECK(scene.materials[0].absorption.x == Approx(0.05 / 0.476).epsilon(1e-5));
+        CHECK(scene.sources[0].jsonPath == "/sources/0");
+    }
+    SECTION("blender smoke sequence") {
+        const eikon::Scene scene =
+            eikon::loadScene((folder / "blender_smoke_sequence.json").string());
+        CHECK(scene.sources[0].type == eikon::SourceType::VdbSequence);
+        REQUIRE(scene.lights.size() == 1);
+        CHECK(scene.lights[0].type == eikon::LightType::Spot);
+        CHECK(glm::length(scene.lights[0].direction) == Approx(1.0f));
+        CHECK(scene.time.frameStart == 1);
+        CHECK(scene.time.frameEnd == 10);
+    }
+}
+
+TEST_CASE("the example in docs/scene-format.md parses", "[scene]") {
+    const std::string docPath = std::string(EIKON_SOURCE_DIR) + "/docs/scene-format.md";
+    eikon::Scene scene;
+    REQUIRE_NOTHROW(scene = eikon::parseScene(documentedExample(), docPath));
+    CHECK(scene.sources.size() == 3);
+    CHECK(scene.materials.size() == 3);
+    CHECK(scene.lights.size() == 3);
+    CHECK_FALSE(scene.volume.autoBounds);
+    CHECK(scene.volume.resolution == glm::ivec3(128));
+    CHECK(scene.time.frameEnd == 48);
+    // Relative paths resolve against the folder of the file named for messages.
+    CHECK(scene.sources[0].file ==
+          (fs::path(EIKON_SOURCE_DIR) / "docs" / "caches" / "plume_####.vdb")
+              .lexically_normal()
+              .string());
+    CHECK(scene.sources[0].aliases.at("density") == std::vector<std::string>{"soot_fine"});
+}
+
+TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
+    const eikon::Scene scene = eikon::parseScene(sceneWith(""), "minimal.json");
+    const eikon::Scene model;
+
+    CHECK(scene.volume.autoBounds);
+    CHECK(scene.volume.autoResolution);
+    CHECK(scene.volume.maxResolution == 256);
+
+    REQUIRE(scene.sources.size() == 1);
+    const eikon::SourceSpec& sphere = scene.sources[0];
+    CHECK(sphere.type == eikon::SourceType::Sphere);
+    CHECK(sphere.field == "density");
+    CHECK(sphere.center == glm::vec3(0.0f));
+    CHECK(sphere.radius == 1.0f);
+    CHECK(sphere.value == 1.0f);
+    CHECK(sphere.falloff == 0.0f);
+    CHECK(sphere.voxelSize == 0.05f);
+
+    REQUIRE(scene.materials.size() == 1);
+    const eikon::MaterialSpec& material = scene.materials[0];
+    CHECK(material.name == "m");
+    CHECK(material.field == "density");
+    CHECK(material.absorption == glm::vec3(0.0f));
+    CHECK(material.scattering == glm::vec3(0.0f));
+    CHECK(material.g == 0.0f);
+    CHECK(material.emission == glm::vec3(0.0f));
+    CHECK(material.ior == 1.0f);
+
+    CHECK(scene.lights.empty());
+    CHECK(scene.camera.automatic);
+    CHECK(scene.environment.color == glm::vec3(0.0f));
+    CHECK(scene.render.width == 640);
+    CHECK(scene.render.height == 480);
+    CHECK(scene.render.stepVoxels == 1.0f);
+    CHECK(scene.render.shadowStepVoxels == 3.0f);
+    CHECK(scene.render.minTransmittance == model.render.minTransmittance);
+    CHECK(scene.render.exposure == 0.0f);
+    CHECK(scene.render.seed == 0u);
+    CHECK(scene.output.directory == "out");
+    CHECK(scene.output.name == "frame");
+    CHECK(scene.output.png);
+    CHECK_FALSE(scene.output.exr);
+    CHECK(scene.time.fps == 24.0);
+    CHECK(scene.time.frameStart == 0);
+    CHECK(scene.time.frameEnd == 0);
+}
+
+TEST_CASE("defaults inside sections that are present", "[scene]") {
+    SECTION("a light gets colour, intensity and cone defaults; its direction is normalised") {
+        const eikon::Scene scene = eikon::parseScene(
+            sceneWith(
+                R"("lights": [{"type": "spot", "position": [0, 4, 0], "direction": [0, -2, 0]}])"),
+            "s.json");
+        const eikon::LightSpec& spot = scene.lights.at(0);
+        CHECK(spot.color == glm::vec3(1.0f));
+        CHECK(spot.intensity == 1.0f);
+        CHECK(spot.coneAngleDeg == 30.0f);
+        CHECK(spot.coneSoftnessDeg == 5.0f);
+        CHECK(spot.direction == glm::vec3(0.0f, -1.0f, 0.0f));
+    }
+    SECTION("a narrow cone shrinks the default softness to fit") {
+        const eikon::Scene scene =
+            eikon::parseScene(sceneWith(R"("lights": [{"type": "spot", "position": [0, 4, 0],
+                                     "direction": [0, -1, 0], "cone_angle_deg": 2}])"),
+                              "s.json");
+        CHECK(scene.lights.at(0).coneSoftnessDeg == 2.0f);
+    }
+    SECTION("a camera object gets the remaining defaults and is not automatic") {
+        const eikon::Scene scene =
+            eikon::parseScene(sceneWith(R"("camera": {"position": [1, 2, 3]})"), "s.json");
+        CHECK_FALSE(scene.camera.automatic);
+        CHECK(scene.camera.lookAt == glm::vec3(0.0f));
+        CHECK(scene.camera.up == glm::vec3(0.0f, 1.0f, 0.0f));
+        CHECK(scene.camera.horizontalFovDeg == 45.0f);
+    }
+    SECTION("frame_end defaults to frame_start") {
+        const eikon::Scene scene =
+            eikon::parseScene(sceneWith(R"("time": {"frame_start": 12})"), "s.json");
+        CHECK(scene.time.frameEnd == 12);
+    }
+    SECTION("one integer resolution means a cube; integral floats are integers") {
+        const eikon::Scene scene =
+            eikon::parseScene(sceneWith(R"("volume": {"resolution": 32.0})"), "s.json");
+        CHECK_FALSE(scene.volume.autoResolution);
+        CHECK(scene.volume.resolution == glm::ivec3(32));
+    }
+    SECTION("the full uint32 range of seeds") {
+        const eikon::Scene scene =
+            eikon::parseScene(sceneWith(R"("render": {"seed": 4294967295})"), "s.json");
+        CHECK(scene.render.seed == 4294967295u);
+    }
+}
+
+TEST_CASE("unknown keys are errors with a did-you-mean hint", "[scene]") {
+    SECTION("misspelt light key") {
+        const Failure f = failureOf(
+            sceneWith(R"("lights": [{"type": "point", "position": [0, 1, 0], "intesity": 2}])"));
+        CHECK(f.where == "smoke.json:/lights/0/intesity");
+        CHECK_THAT(f.reason, Contains("unknown key 'intesity'"));
+        CHECK_THAT(f.reason, Contains("did you mean 'intensity'?"));
+        CHECK_THAT(f.reason, Contains("expected one of: type, position, color, intensity"));
+    }
+    SECTION("misspelt nested key") {
+        const Failure f =
+            failureOf(sceneWith(R"("volume": {"bounds": {"min": [0, 0, 0], "maks": [1, 1, 1]}})"));
+        // "max" is required, so its absence is what is reported, pointing at the likely typo.
+        CHECK(f.where == "smoke.json:/volume/bounds/max");
+        CHECK_THAT(f.reason, Contains("missing required key 'max'"));
+        CHECK_THAT(f.reason, Contains("'maks'"));
+    }
+    SECTION("misspelt key inside a section with everything else valid") {
+        const Failure f = failureOf(sceneWith(R"("render": {"widht": 320})"));
+        CHECK(f.where == "smoke.json:/render/widht");
+        CHECK_THAT(f.reason, Contains("did you mean 'width'?"));
+    }
+    SECTION("camelCase spelling of a snake_case key") {
+        const Failure f = failureOf(sceneWith(R"("camera": {"lookAt": [0, 0, 1]})"));
+        CHECK(f.where == "smoke.json:/camera/lookAt");
+        CHECK_THAT(f.reason, Contains("did you mean 'look_at'?"));
+    }
+    SECTION("unknown top-level key") {
+        const Failure f = failureOf(sceneWith(R"("lihgts": [])"));
+        CHECK(f.where == "smoke.json:/lihgts");
+        CHECK_THAT(f.reason, Contains("did you mean 'lights'?"));
+    }
+    SECTION("a key of another source type") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "vdb", "file": "a.vdb", "radius": 2}], "materials": [{"name": "m"}]})");
+        CHECK(f.where == "smoke.json:/sources/0/radius");
+        CHECK_THAT(f.reason, Contains("unknown key 'radius' for a vdb source"));
+        CHECK_THAT(f.reason, Contains("expected one of: type, file, aliases"));
+    }
+    SECTION("an alias for a field that is not canonical") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "vdb", "file": "a.vdb", "aliases": {"densty": ["soot"]}}],
+                "materials": [{"name": "m"}]})");
+        CHECK(f.where == "smoke.json:/sources/0/aliases/densty");
+        CHECK_THAT(f.reason, Contains("did you mean 'density'?"));
+    }
+    SECTION("no hint when nothing is close") {
+        const Failure f = failureOf(sceneWith(R"("environment": {"zzzzzz": 1})"));
+        CHECK_THAT(f.reason, !Contains("did you mean"));
+        CHECK_THAT(f.reason, Contains("expected one of: color"));
+    }
+}
+
+TEST_CASE("wrong types say what was expected and what was found", "[scene]") {
+    SECTION("string for a number") {
+        const Failure f = failureOf(
+            sceneWith(R"("lights": [{"type": "point", "position": [0, 1, 0], "intensity": "2"}])"));
+        CHECK(f.message == R"(smoke.json:/lights/0/intensity: expected a number >= 0, got "2")");
+    }
+    SECTION("string for a colour") {
+        const Failure f = failureOf(R"({"sources": [{"type": "sphere"}],
+                          "materials": [{"name": "m", "absorption": "abc"}]})");
+        CHECK(
+            f.message ==
+            R"(smoke.json:/materials/0/absorption: expected an array of 3 numbers >= 0, got "abc")");
+    }
+    SECTION("two numbers for a vec3") {
+        const Failure f = failureOf(sceneWith(R"("camera": {"position": [1, 2]})"));
+        CHECK(f.where == "smoke.json:/camera/position");
+        CHECK_THAT(f.reason, Contains("expected an array of 3 numbers"));
+        CHECK_THAT(f.reason, Contains("got [1,2]"));
+    }
+    SECTION("number for a boolean") {
+        const Failure f = failureOf(sceneWith(R"("output": {"png": 1})"));
+        CHECK(f.message == "smoke.json:/output/png: expected true or false, got 1");
+    }
+    SECTION("object for an array") {
+        const Failure f = failureOf(R"({"sources": {"type": "sphere"}, "materials": []})");
+        CHECK(f.where == "smoke.json:/sources");
+        CHECK_THAT(f.reason, Contains("expected a non-empty array of sources"));
+    }
+    SECTION("fractional integer") {
+        const Failure f = failureOf(sceneWith(R"("render": {"width": 320.5})"));
+        CHECK(f.message ==
+              "smoke.json:/render/width: expected an integer in [1, 16384], got 320.5");
+    }
+    SECTION("camera neither auto nor an object") {
+        const Failure f = failureOf(sceneWith(R"("camera": "manual")"));
+        CHECK(f.where == "smoke.json:/camera");
+        CHECK_THAT(f.reason, Contains(R"(expected "auto" or an object)"));
+        CHECK_THAT(f.reason, Contains(R"(got "manual")"));
+    }
+    SECTION("the document is not an object") {
+        const Failure f = failureOf("[1, 2, 3]");
+        CHECK(f.where == "smoke.json");
+        CHECK_THAT(f.reason, Contains("expected the scene (an object), got [1,2,3]"));
+    }
+}
+
+TEST_CASE("out-of-range values name the allowed range", "[scene]") {
+    SECTION("negative intensity") {
+        const Failure f = failureOf(
+            sceneWith(R"("lights": [{"type": "point", "position": [0, 1, 0], "intensity": -1}])"));
+        CHECK(f.message == "smoke.json:/lights/0/intensity: expected a number >= 0, got -1");
+    }
+    SECTION("g = 1") {
+        const Failure f =
+            failureOf(R"({"sources": [{"type": "sphere"}], "materials": [{"name": "m", "g": 1}]})");
+        CHECK(f.message == "smoke.json:/materials/0/g: expected a number in (-1, 1), got 1");
+    }
+    SECTION("resolution 0") {
+        const Failure f = failureOf(sceneWith(R"("volume": {"resolution": 0})"));
+        CHECK(f.message ==
+              "smoke.json:/volume/resolution: expected an integer in [1, 1024], got 0");
+    }
+    SECTION("one axis of a resolution array, at its own pointer") {
+        const Failure f = failureOf(sceneWith(R"("volume": {"resolution": [64, 2000, 64]})"));
+        CHECK(f.where == "smoke.json:/volume/resolution/1");
+        CHECK_THAT(f.reason, Contains("expected an integer in [1, 1024], got 2000"));
+    }
+    SECTION("one negative colour channel, at its own pointer") {
+        const Failure f = failureOf(sceneWith(R"("environment": {"color": [1, -0.5, 1]})"));
+        CHECK(f.message == "smoke.json:/environment/color/1: expected a number >= 0, got -0.5");
+    }
+    SECTION("min_transmittance 1") {
+        const Failure f = failureOf(sceneWith(R"("render": {"min_transmittance": 1})"));
+        CHECK_THAT(f.reason, Contains("expected a number in [0, 1), got 1"));
+    }
+    SECTION("seed beyond uint32") {
+        const Failure f = failureOf(sceneWith(R"("render": {"seed": 4294967296})"));
+        CHECK(f.where == "smoke.json:/render/seed");
+        CHECK_THAT(f.reason, Contains("expected an integer in [0, 4294967295]"));
+    }
+    SECTION("cone softness wider than the cone") {
+        const Failure f = failureOf(sceneWith(
+            R"("lights": [{"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0],
+                           "cone_angle_deg": 20, "cone_softness_deg": 25}])"));
+        CHECK(f.where == "smoke.json:/lights/0/cone_softness_deg");
+        CHECK_THAT(f.reason, Contains("expected a number in [0, 20] (at most cone_angle_deg)"));
+    }
+    SECTION("frame_end before frame_start") {
+        const Failure f = failureOf(sceneWith(R"("time": {"frame_start": 5, "frame_end": 3})"));
+        CHECK(f.message ==
+              "smoke.json:/time/frame_end: expected an integer >= frame_start (5), got 3");
+    }
+    SECTION("bounds with min above max") {
+        const Failure f =
+            failureOf(sceneWith(R"("volume": {"bounds": {"min": [0, 0, 0], "max": [1, -1, 1]}})"));
+        CHECK(f.where == "smoke.json:/volume/bounds/max");
+        CHECK_THAT(f.reason, Contains("expected max > min on every axis"));
+    }
+    SECTION("a number too large for a float") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "sphere", "value": 1e300}], "materials": [{"name": "m"}]})");
+        CHECK(f.where == "smoke.json:/sources/0/value");
+        CHECK_THAT(f.reason, Contains("32-bit float"));
+    }
+    SECTION("an output name with a folder in it") {
+        const Failure f = failureOf(sceneWith(R"("output": {"name": "renders/frame"})"));
+        CHECK(f.where == "smoke.json:/output/name");
+        CHECK_THAT(f.reason, Contains("without '/'"));
+    }
+    SECTION("a voxel size that would make a huge grid") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "sphere", "voxel_size": 1e-6}], "materials": [{"name": "m"}]})");
+        CHECK(f.where == "smoke.json:/sources/0/voxel_size");
+    }
+}
+
+TEST_CASE("missing required keys are reported where they belong", "[scene]") {
+    SECTION("no sources") {
+        const Failure f = failureOf(R"({"materials": [{"name": "m"}]})");
+        CHECK(f.message ==
+              "smoke.json:/sources: missing required key 'sources' (a non-empty array of sources)");
+    }
+    SECTION("empty materials") {
+        const Failure f = failureOf(R"({"sources": [{"type": "sphere"}], "materials": []})");
+        CHECK(f.message ==
+              "smoke.json:/materials: expected a non-empty array of materials, got []");
+    }
+    SECTION("material without a name") {
+        const Failure f = failureOf(R"({"sources": [{"type": "sphere"}], "materials": [{}]})");
+        CHECK(f.where == "smoke.json:/materials/0/name");
+        CHECK_THAT(f.reason, Contains("missing required key 'name'"));
+    }
+    SECTION("light without a type") {
+        const Failure f = failureOf(sceneWith(R"("lights": [{"position": [0, 1, 0]}])"));
+        CHECK(f.where == "smoke.json:/lights/0/type");
+        CHECK_THAT(f.reason, Contains("missing required key 'type'"));
+    }
+    SECTION("spot light without a direction") {
+        const Failure f =
+            failureOf(sceneWith(R"("lights": [{"type": "spot", "position": [0, 1, 0]}])"));
+        CHECK(f.where == "smoke.json:/lights/0/direction");
+        CHECK_THAT(f.reason, Contains("missing required key 'direction'"));
+    }
+    SECTION("vdb source without a file") {
+        const Failure f =
+            failureOf(R"({"sources": [{"type": "vdb"}], "materials": [{"name": "m"}]})");
+        CHECK(f.where == "smoke.json:/sources/0/file");
+        CHECK_THAT(f.reason, Contains("missing required key 'file'"));
+    }
+}
+
+TEST_CASE("enumerations list the allowed values", "[scene]") {
+    SECTION("unknown light type") {
+        const Failure f = failureOf(sceneWith(R"("lights": [{"type": "sunlight"}])"));
+        CHECK(f.message == R"(smoke.json:/lights/0/type: expected one of "point", "directional", )"
+                           R"("spot", got "sunlight")");
+    }
+    SECTION("close misspelling gets a hint") {
+        const Failure f = failureOf(sceneWith(R"("lights": [{"type": "directonal"}])"));
+        CHECK_THAT(f.reason, Contains(R"(did you mean "directional"?)"));
+    }
+    SECTION("unknown source type") {
+        const Failure f =
+            failureOf(R"({"sources": [{"type": "mesh"}], "materials": [{"name": "m"}]})");
+        CHECK(f.where == "smoke.json:/sources/0/type");
+        CHECK_THAT(f.reason, Contains(R"("vdb", "vdb_sequence", "sphere", "box")"));
+    }
+    SECTION("material on a field that is not canonical") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "sphere"}], "materials": [{"name": "m", "field": "densty"}]})");
+        CHECK(f.where == "smoke.json:/materials/0/field");
+        CHECK_THAT(f.reason, Contains(R"(did you mean "density"?)"));
+    }
+    SECTION("material on a vector field") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "sphere"}], "materials": [{"name": "m", "field": "velocity"}]})");
+        CHECK(f.where == "smoke.json:/materials/0/field");
+        CHECK_THAT(f.reason, Contains(R"(got "velocity")"));
+    }
+}
+
+TEST_CASE("lights reject the keys their type has no use for", "[scene]") {
+    SECTION("position on a directional light") {
+        const Failure f = failureOf(sceneWith(
+            R"("lights": [{"type": "directional", "direction": [0, -1, 0], "position": [0, 1, 0]}])"));
+        CHECK(f.where == "smoke.json:/lights/0/position");
+        CHECK_THAT(f.reason, Contains("a directional light has no position"));
+    }
+    SECTION("direction on a point light") {
+        const Failure f = failureOf(sceneWith(
+            R"("lights": [{"type": "point", "position": [0, 1, 0], "direction": [0, -1, 0]}])"));
+        CHECK(f.where == "smoke.json:/lights/0/direction");
+        CHECK_THAT(f.reason, Contains("a point light shines in every direction"));
+    }
+    SECTION("cone on a point light") {
+        const Failure f = failureOf(sceneWith(
+            R"("lights": [{"type": "point", "position": [0, 1, 0], "cone_angle_deg": 20}])"));
+        CHECK(f.where == "smoke.json:/lights/0/cone_angle_deg");
+        CHECK_THAT(f.reason, Contains("applies only to spot lights"));
+    }
+    SECTION("zero direction") {
+        const Failure f =
+            failureOf(sceneWith(R"("lights": [{"type": "directional", "direction": [0, 0, 0]}])"));
+        CHECK(
+            f.message ==
+            "smoke.json:/lights/0/direction: expected a non-zero direction [x, y, z], got [0,0,0]");
+    }
+}
+
+TEST_CASE("counts and uniqueness", "[scene]") {
+    SECTION("too many lights") {
+        const std::string light = R"({"type": "directional", "direction": [0, -1, 0]})";
+        std::string lights = light;
+        for (int i = 0; i < 4; ++i) lights += ", " + light;
+        const Failure f = failureOf(sceneWith(R"("lights": [)" + lights + "]"));
+        CHECK(f.message ==
+              "smoke.json:/lights: expected at most 4 elements in an array of lights, "
+              "got 5");
+    }
+    SECTION("too many materials") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "sphere"}], "materials": [{"name": "a"}, {"name": "b"},
+                {"name": "c"}, {"name": "d"}, {"name": "e"}]})");
+        CHECK(f.where == "smoke.json:/materials");
+        CHECK_THAT(f.reason, Contains("at most 4"));
+    }
+    SECTION("duplicate material name") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "sphere"}], "materials": [{"name": "smoke"}, {"name": "smoke"}]})");
+        CHECK(f.message ==
+              "smoke.json:/materials/1/name: duplicate material name \"smoke\" "
+              "(already used by /materials/0)");
+    }
+    SECTION("a key repeated in one object") {
+        const Failure f = failureOf(sceneWith(R"("render": {"width": 320, "width": 640})"));
+        CHECK(f.where == "smoke.json:/render/width");
+        CHECK_THAT(f.reason, Contains("duplicate key 'width'"));
+    }
+    SECTION("a key repeated inside an array element") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "sphere"}, {"type": "box", "min": [0, 0, 0], "min": [1, 1, 1]}],
+                "materials": [{"name": "m"}]})");
+        CHECK(f.where == "smoke.json:/sources/1/min");
+    }
+}
+
+TEST_CASE("camera geometry is checked", "[scene]") {
+    SECTION("up parallel to the view direction") {
+        const Failure f = failureOf(sceneWith(
+            R"("camera": {"position": [0, 5, 0], "look_at": [0, 0, 0], "up": [0, 1, 0]})"));
+        CHECK(f.where == "smoke.json:/camera/up");
+        CHECK_THAT(f.reason, Contains("expected an up vector not parallel to the view direction"));
+    }
+    SECTION("default up parallel to the view direction") {
+        const Failure f = failureOf(sceneWith(R"("camera": {"position": [0, -5, 0]})"));
+        CHECK(f.where == "smoke.json:/camera/up");
+        CHECK_THAT(f.reason, Contains("(the default)"));
+    }
+    SECTION("position equal to look_at") {
+        const Failure f =
+            failureOf(sceneWith(R"("camera": {"position": [1, 1, 1], "look_at": [1, 1, 1]})"));
+        CHECK(f.where == "smoke.json:/camera/look_at");
+        CHECK_THAT(f.reason, Contains("expected a point different from position"));
+    }
+    SECTION("field of view out of range") {
+        const Failure f = failureOf(sceneWith(R"("camera": {"horizontal_fov_deg": 180})"));
+        CHECK(f.message ==
+              "smoke.json:/camera/horizontal_fov_deg: expected a number in (0, 180), got 180");
+    }
+}
+
+TEST_CASE("syntax errors give the line and column", "[scene]") {
+    const std::string text =
+        "{\n  \"sources\": [],\n  \"materials\": [\n    {\"name\" \"m\"}\n  ]\n}";
+    const Failure f = failureOf(text);
+    CHECK(f.where == "smoke.json");
+    // The column is where the parser stopped: the end of the unexpected "m" (columns 13-15).
+    CHECK_THAT(f.reason, Contains("invalid JSON at line 4, column 15"));
+    CHECK_THAT(f.reason, Contains("syntax error"));
+
+    SECTION("a trailing comma") {
+        const Failure trailing = failureOf("{\n  \"render\": {\"width\": 1,},\n}");
+        CHECK_THAT(trailing.reason, Contains("line 2"));
+    }
+    SECTION("an empty file") {
+        const Failure empty = failureOf("");
+        CHECK_THAT(empty.reason, Contains("invalid JSON at line 1, column 1"));
+    }
+}
+
+TEST_CASE("loadScene reports files it cannot read", "[scene]") {
+    SECTION("missing file") {
+        const std::string path = "no/such/scene.json";
+        try {
+            eikon::loadScene(path);
+            FAIL("expected an error");
+        } catch (const eikon::Error& e) {
+            CHECK(e.where() == path);
+            CHECK_THAT(e.reason(), Contains("not found"));
+        }
+    }
+    SECTION("a folder") {
+        REQUIRE_THROWS_WITH(eikon::loadScene(EIKON_SOURCE_DIR),
+                            (Contains(EIKON_SOURCE_DIR) && Contains("is a folder")));
+    }
+    SECTION("errors in a loaded file name that file") {
+        const fs::path folder = fs::path(EIKON_TEST_SCRATCH);
+        fs::create_directories(folder);
+        const fs::path path = folder / "bad_intensity.json";
+        std::ofstream(path) << sceneWith(
+            R"("lights": [{"type": "point", "position": [0, 1, 0], "intensity": -1}])");
+        REQUIRE_THROWS_WITH(eikon::loadScene(path.string()),
+                            Contains(path.string() + ":/lights/0/intensity"));
+    }
+}
+
+TEST_CASE("relative source files resolve against the scene's folder", "[scene]") {
+    const std::string text =
+        R"({"sources": [{"type": "vdb", "file": "../caches/smoke.vdb"},
+                        {"type": "vdb", "file": "/abs/smoke.vdb"}],
+            "materials": [{"name": "m"}]})";
+    const eikon::Scene scene = eikon::parseScene(text, "/projects/shot/scenes/smoke.json");
+    CHECK(scene.sources[0].file == "/projects/shot/caches/smoke.vdb");
+    CHECK(scene.sources[1].file == "/abs/smoke.vdb");
+
+    SECTION("a #### pattern needs vdb_sequence") {
+        const Failure f = failureOf(
+            R"({"sources": [{"type": "vdb", "file": "smoke_####.vdb"}], "materials": [{"name": "m"}]})");
+        CHECK(f.where == "smoke.json:/sources/0/file");
+        CHECK_THAT(f.reason, Contains("vdb_sequence"));
+    }
+}
+
+// The reader's helpers, through core/json_reader.h (the scene parser's building blocks).
+TEST_CASE("json reader helpers", "[scene]") {
+    using eikon::json::closestMatch;
+    using eikon::json::editDistance;
+    using eikon::json::Range;
+
+    CHECK(editDistance("intesity", "intensity") == 1);
+    CHECK(editDistance("widht", "width") == 1);  // a transposition is one edit
+    CHECK(editDistance("", "abc") == 3);
+
+    const std::vector<std::string> keys = {"min", "max", "horizontal_fov_deg", "g"};
+    CHECK(closestMatch("maks", keys) == "max");
+    CHECK(closestMatch("horizontalFovDeg", keys) == "horizontal_fov_deg");
+    CHECK(closestMatch("G", keys) == "g");
+    CHECK(closestMatch("x", keys).empty());  // one letter is no evidence of a typo
+    CHECK(closestMatch("zzz", keys).empty());
+
+    CHECK(Range::atLeast(0).describe() == ">= 0");
+    CHECK(Range::greaterThan(0).describe() == "> 0");
+    CHECK(Range::closedOpen(0, 1).describe() == "in [0, 1)");
+    CHECK(Range::open(-1, 1).describe() == "in (-1, 1)");
+    CHECK(Range::any().describe().empty());
+    CHECK(Range::openClosed(0, 90).contains(90.0));
+    CHECK_FALSE(Range::openClosed(0, 90).contains(0.0));
+
+    CHECK(eikon::json::appendPointer("/aliases", "a/b~c") == "/aliases/a~1b~0c");
+}
