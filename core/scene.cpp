@@ -411,6 +411,12 @@ RenderSettings readRender(const Value& value) {
         render.minTransmittance = cutoff->floatNumber(Range::closedOpen(0.0, 1.0));
     }
     if (auto exposure = object.optional("exposure")) render.exposure = exposure->floatNumber();
+    if (auto shadows = object.optional("shadows")) {
+        const std::string mode = shadows->choice({"volume", "swept", "marched"});
+        render.shadows = mode == "volume"  ? ShadowMode::Volume
+                         : mode == "swept" ? ShadowMode::Swept
+                                           : ShadowMode::Marched;
+    }
     if (auto seed = object.optional("seed")) {
         render.seed =
             static_cast<std::uint32_t>(seed->integer(0, std::numeric_limits<std::uint32_t>::max()));

@@ -89,6 +89,12 @@ struct EnvironmentSpec {
     glm::vec3 color{0.0f};  // constant background radiance
 };
 
+// Where the viewing pass gets a light's transmittance: a volume computed once per change of
+// lights or extinction by marching from every voxel (camera moves reuse it); the same volume
+// swept slice by slice for directional lights (faster, blurs shadow edges); or a ray marched
+// toward the light from every sample (the reference, as OpenVDB's vdb_render does).
+enum class ShadowMode { Volume, Swept, Marched };
+
 struct RenderSettings {
     int width = 640;
     int height = 480;
@@ -96,6 +102,7 @@ struct RenderSettings {
     float shadowStepVoxels = 3.0f;  // step toward the light
     float minTransmittance = 1e-3f; // a view ray stops when every channel is below this
     float exposure = 0.0f;          // stops; the tone map multiplies by 2^exposure
+    ShadowMode shadows = ShadowMode::Volume;
     std::uint32_t seed = 0;
 };
 

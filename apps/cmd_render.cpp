@@ -1,0 +1,147 @@
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "apps/commands.h"
+#include "core/error.h"
+#include "core/scene.h"
+#include "render/frame_renderer.h"
+#include "render/gl_context.h"
+
+namespace fs = std::filesystem;
+
+namespace eikon::app {
+namespace {
+
+struct RenderOptions {
+    std::string input;
+    std::string outputDir;
+    std::string frames;
+    std::string size;
+    bool stats = false;
+    bool cpu = false;
+    bool exr = false;
+    std::string shadows;
+};
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void parseFrames(const std::string& text, TimeSettings& time) {
+    int a = 0, b = 0;
+    char dash = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d", &a, &dash, &b) == 3 && dash == '-' && a >= 0 && b >= a) {
+        time.frameStart = a;
+        time.frameEnd = b;
+    } else if (std::sscanf(text.c_str(), "%d", &a) == 1 && a >= 0 && text.find('-') == std::string::npos) {
+        time.frameStart = time.frameEnd = a;
+    } else {
+        throw Error("--frames", "expected FIRST-LAST or one frame (e.g. 0-119), got '" + text + "'");
+    }
+}
+
+void parseSize(const std::string& text, RenderSettings& render) {
+    int w = 0, h = 0;
+    char x = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d", &w, &x, &h) != 3 || x != 'x' || w < 1 || h < 1 ||
+        w > 16384 || h > 16384)
+        throw Error("--size", "expected WIDTHxHEIGHT (e.g. 640x480), got '" + text + "'");
+    render.width = w;
+    render.height = h;
+}
+
+Scene sceneFor(const RenderOptions& o) {
+    Scene scene;
+    if (endsWith(o.input, ".vdb")) {
+        scene = defaultSceneForVdb(o.input);
+        scene.output.name = fs::path(o.input).stem().string();
+    } else {
+        scene = loadScene(o.input);
+    }
+    if (!o.outputDir.empty()) scene.output.directory = o.outputDir;
+    if (!o.frames.empty()) parseFrames(o.frames, scene.time);
+    if (!o.size.empty()) parseSize(o.size, scene.render);
+    if (o.exr) scene.output.exr = true;
+    if (o.shadows == "volume") scene.render.shadows = ShadowMode::Volume;
+    if (o.shadows == "swept") scene.render.shadows = ShadowMode::Swept;
+    if (o.shadows == "marched") scene.render.shadows = ShadowMode::Marched;
+    return scene;
+}
+
+std::string framePath(const Scene& scene, int frame, const char* ext) {
+    char number[16];
+    std::snprintf(number, sizeof(number), "_%04d.", frame);
+    return (fs::path(scene.output.directory) / (scene.output.name + number + ext)).string();
+}
+
+void printStats(const std::vector<StageTime>& stages, double writeMs) {
+    std::printf("  %-10s %10s %10s\n", "stage", "cpu ms", "gpu ms");
+    for (const StageTime& s : stages) {
+        if (s.gpuMs >= 0)
+            std::printf("  %-10s %10.1f %10.1f\n", s.name.c_str(), s.cpuMs, s.gpuMs);
+        else
+            std::printf("  %-10s %10.1f %10s\n", s.name.c_str(), s.cpuMs, "-");
+    }
+    std::printf("  %-10s %10.1f %10s\n", "write", writeMs, "-");
+}
+
+int runRender(const RenderOptions& o) {
+    const Scene scene = sceneFor(o);
+    std::error_code ec;
+    fs::create_directories(scene.output.directory, ec);
+    if (ec) throw Error(scene.output.directory, "cannot create the output folder: " + ec.message());
+
+    FrameRenderer renderer(scene, o.cpu ? Backend::Cpu : Backend::Gpu);
+    if (renderer.context())
+        std::printf("GPU: %s (%s)\n", renderer.context()->rendererName().c_str(),
+                    renderer.context()->versionString().c_str());
+    else
+        std::printf("CPU twin (TBB)\n");
+    for (int frame = scene.time.frameStart; frame <= scene.time.frameEnd; ++frame) {
+        const Image image = renderer.render(frame);
+        const auto t0 = std::chrono::steady_clock::now();
+        if (scene.output.png) {
+            const std::string path = framePath(scene, frame, "png");
+            writePng(path, image, scene.render.exposure);
+            std::printf("wrote %s\n", path.c_str());
+        }
+        if (scene.output.exr) {
+            const std::string path = framePath(scene, frame, "exr");
+            writeExr(path, image);
+            std::printf("wrote %s\n", path.c_str());
+        }
+        const double writeMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        const auto stats = renderer.takeStats();
+        if (o.stats) {
+            const RenderVolume& v = renderer.volume();
+            std::printf("frame %d: %dx%d pixels, volume %dx%dx%d\n", frame, image.width,
+                        image.height, v.resolution.x, v.resolution.y, v.resolution.z);
+            printStats(stats, writeMs);
+        }
+        std::fflush(stdout);
+    }
+    return 0;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, int& exitCode) {
+    auto* cmd = app.add_subcommand("render", "Render a scene file or a VDB cache to images");
+    auto o = std::make_shared<RenderOptions>();
+    cmd->add_option("input", o->input, "scene.json or cache.vdb")->required();
+    cmd->add_option("-o,--output", o->outputDir, "output folder (default: the scene's)");
+    cmd->add_option("--frames", o->frames, "frame range FIRST-LAST, or one frame");
+    cmd->add_option("--size", o->size, "image size WIDTHxHEIGHT");
+    cmd->add_flag("--stats", o->stats, "print time per stage (CPU and GPU)");
+    cmd->add_flag("--cpu", o->cpu, "render with the CPU twin instead of the GPU");
+    cmd->add_flag("--exr", o->exr, "also write linear HDR EXR");
+    cmd->add_option("--shadows", o->shadows, "light transmittance: volume, swept or marched")
+        ->check(CLI::IsMember({"volume", "swept", "marched"}));
+    cmd->callback([o, &exitCode] { exitCode = runRender(*o); });
+}
+
+}  // namespace eikon::app

@@ -1,0 +1,11 @@
+#pragma once
+// The `eikon` subcommands; each registers its options on the CLI11 app and returns the exit code
+// through the callback it installs.
+#include <CLI/CLI.hpp>
+
+namespace eikon::app {
+
+void addInfoCommand(CLI::App& app, int& exitCode);
+void addRenderCommand(CLI::App& app, int& exitCode);
+
+}  // namespace eikon::app

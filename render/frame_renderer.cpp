@@ -1,0 +1,119 @@
+#include "render/frame_renderer.h"
+
+#include "core/camera.h"
+#include "core/resample.h"
+#include "render/gl_context.h"
+#include "render/params_buffer.h"
+#include "render/view_params.h"
+#include "render/view_pass.h"
+#include "render/volume_textures.h"
+
+namespace eikon {
+
+FrameRenderer::FrameRenderer(const Scene& scene, Backend backend)
+    : scene_(scene), backend_(backend), sources_(scene_) {
+    if (backend_ == Backend::Gpu) {
+        context_ = createHeadlessContext();
+        textures_ = std::make_unique<VolumeTextures>();
+        paramsBuffer_ = std::make_unique<ParamsBuffer>();
+        lightVolumesGpu_ = std::make_unique<LightVolumesGpu>();
+        viewPass_ = std::make_unique<ViewPassGpu>();
+    }
+    timer_ = std::make_unique<GpuStageTimer>(backend_ == Backend::Gpu);
+}
+
+FrameRenderer::~FrameRenderer() {
+    // GL objects go before the context that owns them.
+    timer_.reset();
+    viewPass_.reset();
+    lightVolumesGpu_.reset();
+    paramsBuffer_.reset();
+    textures_.reset();
+    context_.reset();
+}
+
+namespace {
+
+// The bytes the light volumes depend on: the parameters without camera and image settings, and
+// the versions of the field grids. Equal bytes, equal volumes.
+std::vector<unsigned char> lightVolumeInputs(const ViewSetup& setup,
+                                             const std::vector<const DenseGrid*>& grids) {
+    shared::GpuViewParams p = setup.params;
+    p.cameraOrigin = p.cameraRight = p.cameraUp = p.cameraForward = glm::vec4(0.0f);
+    p.image.x = p.image.y = 0;
+    p.background = glm::vec4(0.0f);
+    const auto* bytes = reinterpret_cast<const unsigned char*>(&p);
+    std::vector<unsigned char> key(bytes, bytes + sizeof(p));
+    for (const DenseGrid* g : grids) {
+        const auto* v = reinterpret_cast<const unsigned char*>(&g->version);
+        key.insert(key.end(), v, v + sizeof(g->version));
+    }
+    return key;
+}
+
+}  // namespace
+
+int FrameRenderer::uploads() const { return textures_ ? textures_->uploads() : 0; }
+
+std::vector<StageTime> FrameRenderer::takeStats() {
+    std::vector<StageTime> out = timer_->results();
+    timer_->reset();
+    return out;
+}
+
+Image FrameRenderer::render(int frame) {
+    timer_->begin("load");
+    sources_.loadFrame(frame, fields_);
+    timer_->end();
+
+    timer_->begin("resample");
+    volume_ = chooseRenderVolume(scene_, fields_);
+    const CameraFrame camera =
+        makeCameraFrame(scene_.camera, volume_.bounds, scene_.render.width, scene_.render.height);
+    const ViewSetup setup = makeViewSetup(scene_, volume_, camera);
+    std::vector<const DenseGrid*> slotGrids;
+    for (const std::string& name : setup.slotFields) {
+        const Field& f = fields_.get(name);
+        auto it = dense_.find(name);
+        if (it == dense_.end() || it->second.version != f.version || it->second.volume != volume_) {
+            dense_[name] = resampleToDense(f, volume_);
+            ++resamples_;
+        }
+        slotGrids.push_back(&dense_[name]);
+    }
+    timer_->end();
+
+    const bool needLights = viewNeedsLightVolumes(setup);
+    std::vector<unsigned char> lightInputs;
+    if (needLights) lightInputs = lightVolumeInputs(setup, slotGrids);
+    const bool lightsChanged = needLights && lightInputs != lightInputs_;
+
+    if (backend_ == Backend::Cpu) {
+        if (lightsChanged) {
+            timer_->begin("light");
+            lightVolumesCpu_ = computeLightVolumesCpu(setup, slotGrids);
+            timer_->end();
+        }
+        timer_->begin("view");
+        Image image = renderViewCpu(setup, slotGrids,
+                                    needLights ? lightVolumesCpu_ : std::vector<LightVolumeCpu>{});
+        timer_->end();
+        if (lightsChanged) {
+            lightInputs_ = std::move(lightInputs);
+            ++lightVolumeUpdates_;
+        }
+        return image;
+    }
+    timer_->begin("upload");
+    textures_->update(slotGrids);
+    paramsBuffer_->upload(setup.params);
+    timer_->end();
+    if (lightsChanged) {
+        lightVolumesGpu_->compute(setup, *textures_, timer_.get());
+        lightInputs_ = std::move(lightInputs);
+        ++lightVolumeUpdates_;
+    }
+    return viewPass_->render(setup, *textures_, *lightVolumesGpu_, timer_.get());
+}
+
+}  // namespace eikon

@@ -1,0 +1,70 @@
+#pragma once
+// One frame from scene to image: sources -> fields -> dense volumes -> (upload) -> viewing pass.
+// Each step reruns only when its input changed: files are read when the frame's file changes,
+// fields are resampled when their version or the volume changes, textures are uploaded when the
+// resampled grid changes. Runs on the GPU (headless EGL context it owns) or on the CPU twin.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/dense_grid.h"
+#include "core/field_registry.h"
+#include "core/scene.h"
+#include "core/scene_sources.h"
+#include "render/gpu_timer.h"
+#include "render/image.h"
+#include "render/light_volume.h"
+
+namespace eikon {
+
+class GlContext;
+class LightVolumesGpu;
+class ParamsBuffer;
+class VolumeTextures;
+class ViewPassGpu;
+
+enum class Backend { Gpu, Cpu };
+
+class FrameRenderer {
+public:
+    // Gpu creates a headless GL 4.3 context; throws eikon::Error when there is none.
+    FrameRenderer(const Scene& scene, Backend backend);
+    ~FrameRenderer();
+
+    Image render(int frame);
+
+    // The scene, for changes between frames (camera, lights, materials need no reload).
+    Scene& scene() { return scene_; }
+    const RenderVolume& volume() const { return volume_; }
+    const FieldRegistry& fields() const { return fields_; }
+    Backend backend() const { return backend_; }
+    const GlContext* context() const { return context_.get(); }
+    // Stage times summed since the last call (load, resample, upload, light, view, readback).
+    std::vector<StageTime> takeStats();
+    int uploads() const;
+    int resamples() const { return resamples_; }
+    // How often the light transmittance volumes were computed: only when lights, extinction or
+    // fields changed (a camera move reuses them).
+    int lightVolumeUpdates() const { return lightVolumeUpdates_; }
+
+private:
+    Scene scene_;
+    Backend backend_;
+    std::unique_ptr<GlContext> context_;
+    SceneSources sources_;
+    FieldRegistry fields_;
+    std::map<std::string, DenseGrid> dense_;  // by field name
+    RenderVolume volume_;
+    std::unique_ptr<VolumeTextures> textures_;
+    std::unique_ptr<ParamsBuffer> paramsBuffer_;
+    std::unique_ptr<LightVolumesGpu> lightVolumesGpu_;
+    std::unique_ptr<ViewPassGpu> viewPass_;
+    std::vector<LightVolumeCpu> lightVolumesCpu_;
+    std::vector<unsigned char> lightInputs_;  // what the light volumes were computed from
+    std::unique_ptr<GpuStageTimer> timer_;
+    int resamples_ = 0;
+    int lightVolumeUpdates_ = 0;
+};
+
+}  // namespace eikon

@@ -1,0 +1,108 @@
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfOutputFile.h>
+#include <png.h>
+
+#include "core/error.h"
+#include "render/image.h"
+
+namespace eikon {
+namespace {
+
+float srgbEncode(float linear) {
+    if (!(linear > 0.0f)) return 0.0f;  // also maps NaN to black
+    if (linear >= 1.0f) return 1.0f;
+    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+// Writes through `<path>.partial` and renames over `path` only after `write` succeeded.
+template <typename WriteFn>
+void writeAtomically(const std::string& path, WriteFn write) {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    std::error_code ec;
+    if (!target.parent_path().empty() && !fs::is_directory(target.parent_path(), ec))
+        throw Error(path, "folder '" + target.parent_path().string() + "' does not exist");
+    const std::string partial = path + ".partial";
+    try {
+        write(partial);
+    } catch (const Error&) {
+        fs::remove(partial, ec);
+        throw;
+    } catch (const std::exception& e) {
+        fs::remove(partial, ec);
+        throw Error(path, std::string("could not write: ") + e.what());
+    }
+    fs::rename(partial, target, ec);
+    if (ec) {
+        fs::remove(partial, ec);
+        throw Error(path, "could not replace the file: " + ec.message());
+    }
+}
+
+void writePngFile(const std::string& file, const std::string& nameForErrors, int width, int height,
+                  const std::vector<unsigned char>& rgb) {
+    FILE* fp = std::fopen(file.c_str(), "wb");
+    if (!fp) throw Error(nameForErrors, "cannot open for writing");
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!png || !info || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        std::fclose(fp);
+        throw Error(nameForErrors, "libpng failed while writing");
+    }
+    png_init_io(png, fp);
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    for (int y = 0; y < height; ++y)
+        png_write_row(png, rgb.data() + size_t(y) * size_t(width) * 3);
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    if (std::fclose(fp) != 0) throw Error(nameForErrors, "could not finish writing (disk full?)");
+}
+
+}  // namespace
+
+std::vector<unsigned char> toneMapToSrgb8(const Image& image, float exposureStops) {
+    const float scale = std::exp2(exposureStops);
+    std::vector<unsigned char> out(image.pixels.size() * 3);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            out[i * 3 + size_t(c)] =
+                (unsigned char)std::lround(255.0f * srgbEncode(scale * image.pixels[i][c]));
+    return out;
+}
+
+void writePng(const std::string& path, const Image& image, float exposureStops) {
+    const std::vector<unsigned char> rgb = toneMapToSrgb8(image, exposureStops);
+    writeAtomically(path, [&](const std::string& file) {
+        writePngFile(file, path, image.width, image.height, rgb);
+    });
+}
+
+void writeExr(const std::string& path, const Image& image) {
+    writeAtomically(path, [&](const std::string& file) {
+        Imf::Header header(image.width, image.height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        const char* names[4] = {"R", "G", "B", "A"};
+        for (const char* n : names) header.channels().insert(n, Imf::Channel(Imf::FLOAT));
+        Imf::FrameBuffer fb;
+        const size_t xStride = sizeof(glm::vec4);
+        const size_t yStride = xStride * size_t(image.width);
+        char* base = const_cast<char*>(reinterpret_cast<const char*>(image.pixels.data()));
+        for (int c = 0; c < 4; ++c)
+            fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride));
+        Imf::OutputFile out(file.c_str(), header);
+        out.setFrameBuffer(fb);
+        out.writePixels(image.height);
+    });
+}
+
+}  // namespace eikon

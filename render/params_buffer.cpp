@@ -1,0 +1,19 @@
+#include "render/params_buffer.h"
+
+#include <epoxy/gl.h>
+
+namespace eikon {
+
+ParamsBuffer::ParamsBuffer() { glGenBuffers(1, &buffer_); }
+
+ParamsBuffer::~ParamsBuffer() {
+    if (buffer_) glDeleteBuffers(1, &buffer_);
+}
+
+void ParamsBuffer::upload(const shared::GpuViewParams& params) {
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer_);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(params), &params, GL_DYNAMIC_DRAW);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
+}
+
+}  // namespace eikon

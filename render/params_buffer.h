@@ -1,0 +1,21 @@
+#pragma once
+// The GpuViewParams SSBO at binding 0, shared by the light-volume passes and the viewing pass of
+// a frame: uploaded once per frame.
+#include "shaders/shared/gpu_types.h"
+
+namespace eikon {
+
+class ParamsBuffer {
+public:
+    ParamsBuffer();
+    ~ParamsBuffer();
+    ParamsBuffer(const ParamsBuffer&) = delete;
+    ParamsBuffer& operator=(const ParamsBuffer&) = delete;
+    // Uploads and binds to SSBO binding 0.
+    void upload(const shared::GpuViewParams& params);
+
+private:
+    unsigned buffer_ = 0;
+};
+
+}  // namespace eikon

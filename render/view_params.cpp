@@ -1,0 +1,78 @@
+#include "render/view_params.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/trigonometric.hpp>
+
+#include "core/error.h"
+
+namespace eikon {
+namespace {
+
+glm::vec4 v4(glm::vec3 v, float w = 0.0f) { return glm::vec4(v, w); }
+
+shared::GpuLight packLight(const LightSpec& l) {
+    shared::GpuLight g{};
+    float type = EK_LIGHT_POINT;
+    if (l.type == LightType::Directional) type = EK_LIGHT_DIRECTIONAL;
+    if (l.type == LightType::Spot) type = EK_LIGHT_SPOT;
+    const float cosOuter = std::cos(glm::radians(l.coneAngleDeg));
+    const float cosInner = std::cos(glm::radians(std::max(l.coneAngleDeg - l.coneSoftnessDeg, 0.0f)));
+    g.position = v4(l.position, type);
+    g.direction = v4(glm::normalize(l.direction), cosOuter);
+    // smoothstep(outer, inner, cos) needs inner > outer; a hard edge gets a hair of width.
+    g.radiance = v4(l.color * l.intensity, std::max(cosInner, cosOuter + 1e-6f));
+    return g;
+}
+
+int shadowModeCode(ShadowMode mode) {
+    switch (mode) {
+        case ShadowMode::Marched: return EK_SHADOWS_MARCHED;
+        case ShadowMode::Swept: return EK_SHADOWS_SWEPT;
+        case ShadowMode::Volume: break;
+    }
+    return EK_SHADOWS_VOLUME;
+}
+
+}  // namespace
+
+ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera) {
+    if (scene.materials.size() > EK_MAX_MATERIALS)
+        throw Error(scene.path + ":/materials", "at most " + std::to_string(EK_MAX_MATERIALS) +
+                                                    " materials are supported");
+    if (scene.lights.size() > EK_MAX_LIGHTS)
+        throw Error(scene.path + ":/lights",
+                    "at most " + std::to_string(EK_MAX_LIGHTS) + " lights are supported");
+    ViewSetup setup;
+    shared::GpuViewParams& p = setup.params;
+    const glm::vec3 voxel = volume.voxelSize();
+    const float smallestVoxel = std::min({voxel.x, voxel.y, voxel.z});
+
+    p.cameraOrigin = v4(camera.origin, camera.tanHalfFovX);
+    p.cameraRight = v4(camera.right, camera.aspect);
+    p.cameraUp = v4(camera.up);
+    p.cameraForward = v4(camera.forward);
+    p.volumeMin = v4(volume.bounds.min, scene.render.stepVoxels * smallestVoxel);
+    p.volumeMax = v4(volume.bounds.max, scene.render.shadowStepVoxels * smallestVoxel);
+    p.resolution = glm::ivec4(volume.resolution, int(scene.materials.size()));
+    p.image = glm::ivec4(scene.render.width, scene.render.height, int(scene.lights.size()),
+                         shadowModeCode(scene.render.shadows));
+    p.background = v4(scene.environment.color, scene.render.minTransmittance);
+
+    for (size_t m = 0; m < scene.materials.size(); ++m) {
+        const MaterialSpec& mat = scene.materials[m];
+        auto slot = std::find(setup.slotFields.begin(), setup.slotFields.end(), mat.field);
+        if (slot == setup.slotFields.end())
+            slot = setup.slotFields.insert(setup.slotFields.end(), mat.field);
+        shared::GpuMaterial& g = p.materials[m];
+        g.absorption = v4(mat.absorption, mat.g);
+        g.scattering = v4(mat.scattering);
+        g.emission = v4(mat.emission, mat.ior);
+        g.slot = glm::ivec4(int(slot - setup.slotFields.begin()), 0, 0, 0);
+    }
+    for (size_t l = 0; l < scene.lights.size(); ++l) p.lights[l] = packLight(scene.lights[l]);
+    return setup;
+}
+
+}  // namespace eikon

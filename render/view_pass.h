@@ -1,0 +1,40 @@
+#pragma once
+// The straight-ray viewing pass (emission, absorption, single scattering with shadows) on the GPU
+// and its CPU twin. Both run the same shared code (shaders/shared/view_march.h) on the same
+// inputs: the packed parameters and one dense grid per field slot.
+#include <memory>
+#include <vector>
+
+#include "core/dense_grid.h"
+#include "render/image.h"
+#include "render/light_volume.h"
+#include "render/view_params.h"
+
+namespace eikon {
+
+class GpuStageTimer;
+class LightVolumesGpu;
+class VolumeTextures;
+class ShaderProgram;
+
+// CPU twin: rows in parallel (TBB), each pixel independent, so the result does not depend on the
+// thread count. `lightVolumes` may be empty when viewNeedsLightVolumes(setup) is false.
+Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
+                    const std::vector<LightVolumeCpu>& lightVolumes);
+
+// GPU pass; needs a current GL 4.3 context and the frame's parameters in the ParamsBuffer. Field
+// textures come from `textures` in slot order.
+class ViewPassGpu {
+public:
+    ViewPassGpu();
+    ~ViewPassGpu();
+    Image render(const ViewSetup& setup, VolumeTextures& textures, const LightVolumesGpu& lights,
+                 GpuStageTimer* timer = nullptr);
+
+private:
+    std::unique_ptr<ShaderProgram> program_;
+    unsigned outputTexture_ = 0;
+    int outputWidth_ = 0, outputHeight_ = 0;
+};
+
+}  // namespace eikon

@@ -1,0 +1,35 @@
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "core/error.h"
+#include "render/volume_kernels_cpu.h"
+#include "render/view_pass.h"
+
+namespace eikon {
+
+Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
+                    const std::vector<LightVolumeCpu>& lightVolumes) {
+    const shared::GpuViewParams& p = setup.params;
+    if (slotGrids.size() != setup.slotFields.size())
+        throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
+                                           " field grids, got " + std::to_string(slotGrids.size()));
+    shared::ViewKernelCpu kernel{{p}};
+    if (viewNeedsLightVolumes(setup) && int(lightVolumes.size()) != p.image.z)
+        throw Error("view pass (CPU)", "the light volumes were not computed");
+    for (size_t l = 0; l < lightVolumes.size(); ++l) kernel.lights[l] = lightVolumes[l].data();
+    for (size_t s = 0; s < slotGrids.size(); ++s) {
+        const glm::ivec3 res = slotGrids[s]->volume.resolution;
+        if (res != glm::ivec3(p.resolution.x, p.resolution.y, p.resolution.z))
+            throw Error("view pass (CPU)", "field '" + slotGrids[s]->field +
+                                               "' was resampled on a different volume");
+        kernel.fields[s] = slotGrids[s]->values.data();
+    }
+    Image image(p.image.x, p.image.y);
+    tbb::parallel_for(tbb::blocked_range<int>(0, image.height), [&](const tbb::blocked_range<int>& r) {
+        for (int y = r.begin(); y != r.end(); ++y)
+            for (int x = 0; x < image.width; ++x) image.at(x, y) = kernel.renderPixel(x, y);
+    });
+    return image;
+}
+
+}  // namespace eikon

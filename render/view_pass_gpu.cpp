@@ -1,0 +1,57 @@
+#include <epoxy/gl.h>
+
+#include "core/error.h"
+#include "render/gpu_timer.h"
+#include "render/light_volume.h"
+#include "render/shader_program.h"
+#include "render/view_pass.h"
+#include "render/volume_textures.h"
+
+namespace eikon {
+
+ViewPassGpu::ViewPassGpu()
+    : program_(std::make_unique<ShaderProgram>(ShaderProgram::compute("view_straight.comp"))) {}
+
+ViewPassGpu::~ViewPassGpu() {
+    if (outputTexture_) glDeleteTextures(1, &outputTexture_);
+}
+
+Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
+                          const LightVolumesGpu& lights, GpuStageTimer* timer) {
+    const shared::GpuViewParams& p = setup.params;
+    const int width = p.image.x, height = p.image.y;
+    if (timer) timer->begin("view");
+    if (!outputTexture_ || width != outputWidth_ || height != outputHeight_) {
+        if (outputTexture_) glDeleteTextures(1, &outputTexture_);
+        glGenTextures(1, &outputTexture_);
+        glBindTexture(GL_TEXTURE_2D, outputTexture_);
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, width, height);
+        outputWidth_ = width;
+        outputHeight_ = height;
+    }
+    glBindImageTexture(0, outputTexture_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    textures.bind();
+    lights.bind();
+    program_->use();
+    const auto local = program_->localSize();
+    glDispatchCompute(GLuint((width + local[0] - 1) / local[0]),
+                      GLuint((height + local[1] - 1) / local[1]), 1);
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    if (timer) timer->end();
+
+    if (timer) timer->begin("readback");
+    Image image(width, height);
+    glBindTexture(GL_TEXTURE_2D, outputTexture_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, image.pixels.data());
+    if (timer) timer->end();
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR)
+        throw Error("view pass", "OpenGL error 0x" + [&] {
+            char buf[16];
+            std::snprintf(buf, sizeof(buf), "%04x", err);
+            return std::string(buf);
+        }());
+    return image;
+}
+
+}  // namespace eikon

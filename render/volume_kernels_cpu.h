@@ -1,0 +1,43 @@
+#pragma once
+// The shared GPU code (shaders/shared/*.h), compiled as C++ for the CPU twins. The shared
+// functions are included inside struct bodies, so that what the shaders read as globals —
+// `params`, `fetchVolume`, `fetchPreviousSlice` — are members here and the code needs no change
+// between the two sides.
+#include <cstddef>
+
+#include "shaders/shared/gpu_types.h"
+
+EK_NAMESPACE_BEGIN
+
+// What volumes_bindings.glsl gives the shaders: field values and light transmittances by slot.
+struct VolumeAccessCpu {
+    const GpuViewParams& params;
+    const float* fields[EK_MAX_MATERIALS] = {};
+    const vec4* lights[EK_MAX_LIGHTS] = {};
+
+    size_t voxelIndex(ivec3 v) const {
+        return (size_t(v.z) * size_t(params.resolution.y) + size_t(v.y)) *
+                   size_t(params.resolution.x) +
+               size_t(v.x);
+    }
+    vec4 fetchVolume(int slot, ivec3 v) const {
+        if (slot < EK_MAX_MATERIALS) return vec4(fields[slot][voxelIndex(v)], 0.0f, 0.0f, 0.0f);
+        return lights[slot - EK_MAX_MATERIALS][voxelIndex(v)];
+    }
+
+#include "shaders/shared/sampling.h"
+#include "shaders/shared/optics.h"
+};
+
+struct ViewKernelCpu : VolumeAccessCpu {
+#include "shaders/shared/view_march.h"
+};
+
+struct LightKernelCpu : VolumeAccessCpu {
+    const vec4* sweepSlices = nullptr;  // the volume being swept; earlier slices are complete
+    vec4 fetchPreviousSlice(ivec3 v) const { return sweepSlices[voxelIndex(v)]; }
+
+#include "shaders/shared/light_volume.h"
+};
+
+EK_NAMESPACE_END

@@ -1,0 +1,53 @@
+// Structs shared by the host and the shaders, in std430 layout. Every member is a vec4, ivec4 or
+// a 4-byte scalar, placed so that C++ offsets equal std430 offsets; tests/render/test_std430.cpp
+// asks the GL driver for each offset and compares.
+#ifndef EIKON_SHARED_GPU_TYPES_H
+#define EIKON_SHARED_GPU_TYPES_H
+#include "platform.h"
+
+EK_NAMESPACE_BEGIN
+
+#define EK_MAX_MATERIALS 4
+#define EK_MAX_LIGHTS 4
+
+#define EK_LIGHT_POINT 0
+#define EK_LIGHT_DIRECTIONAL 1
+#define EK_LIGHT_SPOT 2
+
+// How the viewing pass finds a light's transmittance at a sample.
+#define EK_SHADOWS_VOLUME 0   // lookup in a light volume marched from every voxel centre
+#define EK_SHADOWS_MARCHED 1  // a ray marched toward the light from every sample (reference)
+#define EK_SHADOWS_SWEPT 2    // lookup in a light volume swept slice by slice (directional)
+
+// One material: optics per unit of its field's value (see core/scene.h).
+struct GpuMaterial {
+    vec4 absorption;  // rgb: per scene unit; w: Henyey–Greenstein g
+    vec4 scattering;  // rgb: per scene unit; w: unused
+    vec4 emission;    // rgb: radiance per scene unit; w: ior
+    ivec4 slot;       // x: which field texture the material reads; yzw: unused
+};
+
+struct GpuLight {
+    vec4 position;   // xyz: world position (point, spot); w: type (EK_LIGHT_*)
+    vec4 direction;  // xyz: unit direction the light travels (directional, spot); w: cos(outer)
+    vec4 radiance;   // rgb: colour × intensity; w: cos(inner), where the spot edge starts
+};
+
+// Everything the viewing pass needs besides the field textures.
+struct GpuViewParams {
+    vec4 cameraOrigin;   // xyz; w: tan(horizontal fov / 2)
+    vec4 cameraRight;    // xyz unit; w: image aspect (width / height)
+    vec4 cameraUp;       // xyz unit
+    vec4 cameraForward;  // xyz unit
+    vec4 volumeMin;      // xyz world; w: view step (scene units)
+    vec4 volumeMax;      // xyz world; w: shadow step (scene units)
+    ivec4 resolution;    // xyz voxels; w: material count
+    ivec4 image;         // x, y: pixels; z: light count; w: EK_SHADOWS_*
+    vec4 background;     // rgb radiance; w: minimum transmittance before a ray stops
+    GpuMaterial materials[EK_MAX_MATERIALS];
+    GpuLight lights[EK_MAX_LIGHTS];
+};
+
+EK_NAMESPACE_END
+
+#endif

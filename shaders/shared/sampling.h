@@ -1,0 +1,49 @@
+// Trilinear sampling of the dense field volumes, the same on the GPU and in the CPU twin.
+// Needs from the includer: the global `params` (GpuViewParams) and
+// `vec4 fetchVolume(int slot, ivec3 voxel)` returning what a volume stores for a voxel: slots
+// 0..EK_MAX_MATERIALS-1 are field textures (value in x), the next EK_MAX_LIGHTS are the light
+// transmittance volumes (rgb).
+// Volume index space: voxel i spans [i, i+1); its value sits at its centre i + 1/2. Outside the
+// outer centres the edge value holds (clamp to edge), as GL_CLAMP_TO_EDGE would.
+
+ivec3 volumeResolution() {
+    return ivec3(params.resolution.x, params.resolution.y, params.resolution.z);
+}
+
+vec3 volumeVoxelSize() {
+    return (vec3(params.volumeMax) - vec3(params.volumeMin)) / vec3(volumeResolution());
+}
+
+vec3 worldToVolumeIndex(vec3 world) {
+    return (world - vec3(params.volumeMin)) / volumeVoxelSize();
+}
+
+vec4 sampleVolume(int slot, vec3 indexPos) {
+    const ivec3 last = volumeResolution() - ivec3(1);
+    const vec3 q = indexPos - vec3(0.5f);
+    const vec3 base = floor(q);
+    const vec3 f = q - base;
+    const ivec3 i0 = clamp(ivec3(base), ivec3(0), last);
+    const ivec3 i1 = clamp(ivec3(base) + ivec3(1), ivec3(0), last);
+    const vec4 c000 = fetchVolume(slot, ivec3(i0.x, i0.y, i0.z));
+    const vec4 c100 = fetchVolume(slot, ivec3(i1.x, i0.y, i0.z));
+    const vec4 c010 = fetchVolume(slot, ivec3(i0.x, i1.y, i0.z));
+    const vec4 c110 = fetchVolume(slot, ivec3(i1.x, i1.y, i0.z));
+    const vec4 c001 = fetchVolume(slot, ivec3(i0.x, i0.y, i1.z));
+    const vec4 c101 = fetchVolume(slot, ivec3(i1.x, i0.y, i1.z));
+    const vec4 c011 = fetchVolume(slot, ivec3(i0.x, i1.y, i1.z));
+    const vec4 c111 = fetchVolume(slot, ivec3(i1.x, i1.y, i1.z));
+    const vec4 c00 = mix(c000, c100, f.x);
+    const vec4 c10 = mix(c010, c110, f.x);
+    const vec4 c01 = mix(c001, c101, f.x);
+    const vec4 c11 = mix(c011, c111, f.x);
+    return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
+}
+
+float sampleField(int slot, vec3 indexPos) { return sampleVolume(slot, indexPos).x; }
+
+// Volume-index position and world position of the centre of voxel v.
+vec3 voxelCenterIndex(ivec3 v) { return vec3(v) + vec3(0.5f); }
+vec3 voxelCenterWorld(ivec3 v) {
+    return vec3(params.volumeMin) + voxelCenterIndex(v) * volumeVoxelSize();
+}

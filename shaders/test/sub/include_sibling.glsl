@@ -1,0 +1,2 @@
+// sub/include_sibling.glsl
+const float SIBLING_MARKER = 20.0;

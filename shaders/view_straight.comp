@@ -1,0 +1,14 @@
+#version 430 core
+// Straight-ray viewing pass (render/view_pass_gpu.cpp): one invocation per pixel.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "volume_bindings.glsl"
+#include "shared/view_march.h"
+
+layout(rgba32f, binding = 0) writeonly uniform image2D outImage;
+
+void main() {
+    const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (p.x >= params.image.x || p.y >= params.image.y) return;
+    imageStore(outImage, p, renderPixel(p.x, p.y));
+}

@@ -1,0 +1,24 @@
+// Bindings every volume pass shares: the packed parameters, the field volumes and the light
+// transmittance volumes, and the fetch hook shaders/shared/sampling.h expects.
+//
+// Each kind lives in ONE 3D texture with its volumes stacked along z (slot s at z offset
+// s·resolution.z), so every fetch goes through one sampler: llvmpipe turns a sampler array
+// indexed by a variable into a per-lane loop (~100x slower), and a switch over constant indices
+// into masked execution of every case.
+#include "shared/gpu_types.h"
+
+layout(std430, binding = 0) readonly buffer ViewParamsBlock { GpuViewParams params; };
+layout(binding = 0) uniform sampler3D fieldTex;  // R32F, EK_MAX_MATERIALS slots at most
+layout(binding = 1) uniform sampler3D lightTex;  // RGBA32F, one volume per light
+
+ivec3 stackedVoxel(int slot, ivec3 voxel) {
+    return ivec3(voxel.x, voxel.y, voxel.z + slot * params.resolution.z);
+}
+
+vec4 fetchVolume(int slot, ivec3 voxel) {
+    if (slot < EK_MAX_MATERIALS) return texelFetch(fieldTex, stackedVoxel(slot, voxel), 0);
+    return texelFetch(lightTex, stackedVoxel(slot - EK_MAX_MATERIALS, voxel), 0);
+}
+
+#include "shared/sampling.h"
+#include "shared/optics.h"
