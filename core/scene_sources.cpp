@@ -4,12 +4,41 @@
 #include "core/procedural.h"
 #include "core/vdb_import.h"
 
+#include <openvdb/tools/Composite.h>
+
 namespace eikon {
 
 SceneSources::SceneSources(const Scene& scene) : scene_(scene) {
     for (size_t s = 0; s < scene.sources.size(); ++s)
         if (scene.sources[s].type == SourceType::VdbSequence)
             sequences_.emplace(s, findVdbSequence(scene.sources[s].file));
+}
+
+namespace {
+
+openvdb::FloatGrid::Ptr makeProceduralField(const SourceSpec& src) {
+    ensureOpenVdbInitialized();
+    if (src.type == SourceType::Sphere)
+        return makeSphereField(src.center, src.radius, src.value, src.falloff, src.voxelSize);
+    return makeBoxField(src.boxMin, src.boxMax, src.value, src.falloff, src.voxelSize);
+}
+
+}  // namespace
+
+void SceneSources::addProcedural(const SourceSpec& src, const std::string& origin,
+                                 FieldRegistry& fields) {
+    openvdb::FloatGrid::Ptr grid = makeProceduralField(src);
+    // Shapes that write the same field overlap by taking the larger value (a union).
+    if (proceduralFields_.count(src.field) && fields.has(src.field)) {
+        auto previous = fields.floatGrid(src.field)->deepCopy();
+        // compMax works in index space: both grids must share the transform.
+        if (previous->transform() != grid->transform())
+            throw Error(origin, "shapes that write field '" + src.field +
+                                    "' must share one voxel_size");
+        openvdb::tools::compMax(*grid, *previous);
+    }
+    proceduralFields_.insert(src.field);
+    fields.set(src.field, grid, origin);
 }
 
 void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
@@ -28,19 +57,7 @@ void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
             case SourceType::Vdb:
             case SourceType::VdbSequence: importVdb(key, fields, src.aliases); break;
             case SourceType::Sphere:
-                ensureOpenVdbInitialized();
-                fields.set(src.field,
-                           makeSphereField(src.center, src.radius, src.value, src.falloff,
-                                           src.voxelSize),
-                           origin);
-                break;
-            case SourceType::Box:
-                ensureOpenVdbInitialized();
-                fields.set(src.field,
-                           makeBoxField(src.boxMin, src.boxMax, src.value, src.falloff,
-                                        src.voxelSize),
-                           origin);
-                break;
+            case SourceType::Box: addProcedural(src, origin, fields); break;
         }
         loadedFile_[s] = key;
     }

@@ -3,6 +3,7 @@
 // frame's file changes, procedural shapes once. Fields that did not change keep their version,
 // so the GPU upload skips them.
 #include <map>
+#include <set>
 #include <string>
 
 #include "core/field_registry.h"
@@ -18,7 +19,10 @@ public:
     void loadFrame(int frame, FieldRegistry& fields);
 
 private:
+    void addProcedural(const SourceSpec& src, const std::string& origin, FieldRegistry& fields);
+
     const Scene& scene_;
+    std::set<std::string> proceduralFields_;  // fields procedural sources have written
     std::map<size_t, VdbSequence> sequences_;    // by source index
     std::map<size_t, std::string> loadedFile_;   // by source index: what is in the registry
 };

@@ -1,7 +1,6 @@
 #include "core/vdb_export.h"
 
-#include <filesystem>
-
+#include "core/atomic_write.h"
 #include "core/error.h"
 #include "core/vdb_import.h"
 
@@ -30,27 +29,13 @@ void exportVdb(const std::string& path, const FieldRegistry& registry,
         grids.push_back(g);
     }
 
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    std::error_code ec;
-    if (!target.parent_path().empty() && !fs::is_directory(target.parent_path(), ec))
-        throw Error(path, "folder '" + target.parent_path().string() + "' does not exist");
-    const fs::path partial = target.string() + ".partial";
-    try {
-        openvdb::io::File file(partial.string());
+    writeAtomically(path, [&](const std::string& partial) {
+        openvdb::io::File file(partial);
         openvdb::MetaMap meta;
         meta.insertMeta("creator", openvdb::StringMetadata("Eikon"));
         file.write(grids, meta);
         file.close();
-    } catch (const std::exception& e) {
-        fs::remove(partial, ec);
-        throw Error(path, std::string("could not write: ") + e.what());
-    }
-    fs::rename(partial, target, ec);
-    if (ec) {
-        fs::remove(partial, ec);
-        throw Error(path, "could not replace the file: " + ec.message());
-    }
+    });
 }
 
 }  // namespace eikon

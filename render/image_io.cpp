@@ -1,6 +1,5 @@
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -8,6 +7,7 @@
 #include <ImfOutputFile.h>
 #include <png.h>
 
+#include "core/atomic_write.h"
 #include "core/error.h"
 #include "render/image.h"
 
@@ -18,31 +18,6 @@ float srgbEncode(float linear) {
     if (!(linear > 0.0f)) return 0.0f;  // also maps NaN to black
     if (linear >= 1.0f) return 1.0f;
     return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
-}
-
-// Writes through `<path>.partial` and renames over `path` only after `write` succeeded.
-template <typename WriteFn>
-void writeAtomically(const std::string& path, WriteFn write) {
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    std::error_code ec;
-    if (!target.parent_path().empty() && !fs::is_directory(target.parent_path(), ec))
-        throw Error(path, "folder '" + target.parent_path().string() + "' does not exist");
-    const std::string partial = path + ".partial";
-    try {
-        write(partial);
-    } catch (const Error&) {
-        fs::remove(partial, ec);
-        throw;
-    } catch (const std::exception& e) {
-        fs::remove(partial, ec);
-        throw Error(path, std::string("could not write: ") + e.what());
-    }
-    fs::rename(partial, target, ec);
-    if (ec) {
-        fs::remove(partial, ec);
-        throw Error(path, "could not replace the file: " + ec.message());
-    }
 }
 
 void writePngFile(const std::string& file, const std::string& nameForErrors, int width, int height,
