@@ -24,6 +24,8 @@ struct RenderOptions {
     bool cpu = false;
     bool exr = false;
     std::string shadows;
+    float step = 0.0f;
+    float shadowStep = 0.0f;
 };
 
 bool endsWith(const std::string& s, const std::string& suffix) {
@@ -65,6 +67,8 @@ Scene sceneFor(const RenderOptions& o) {
     if (!o.frames.empty()) parseFrames(o.frames, scene.time);
     if (!o.size.empty()) parseSize(o.size, scene.render);
     if (o.exr) scene.output.exr = true;
+    if (o.step > 0.0f) scene.render.stepVoxels = o.step;
+    if (o.shadowStep > 0.0f) scene.render.shadowStepVoxels = o.shadowStep;
     if (o.shadows == "volume") scene.render.shadows = ShadowMode::Volume;
     if (o.shadows == "swept") scene.render.shadows = ShadowMode::Swept;
     if (o.shadows == "marched") scene.render.shadows = ShadowMode::Marched;
@@ -141,6 +145,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("--exr", o->exr, "also write linear HDR EXR");
     cmd->add_option("--shadows", o->shadows, "light transmittance: volume, swept or marched")
         ->check(CLI::IsMember({"volume", "swept", "marched"}));
+    cmd->add_option("--step", o->step, "view step in voxels (overrides the scene)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--shadow-step", o->shadowStep, "shadow step in voxels (overrides the scene)")
+        ->check(CLI::PositiveNumber);
     cmd->callback([o, &exitCode] { exitCode = runRender(*o); });
 }
 

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     int exitCode = 0;
     eikon::app::addInfoCommand(app, exitCode);
     eikon::app::addRenderCommand(app, exitCode);
+    eikon::app::addDiffCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -55,7 +55,14 @@ void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
         const std::string origin = scene_.path + ":" + src.jsonPath;
         switch (src.type) {
             case SourceType::Vdb:
-            case SourceType::VdbSequence: importVdb(key, fields, src.aliases); break;
+            case SourceType::VdbSequence:
+                try {
+                    importVdb(key, fields, src.aliases);
+                } catch (const Error& e) {
+                    // The file's own message, plus which source of the scene asked for it.
+                    throw Error(e.where(), e.reason() + " (source " + origin + ")");
+                }
+                break;
             case SourceType::Sphere:
             case SourceType::Box: addProcedural(src, origin, fields); break;
         }

@@ -26,5 +26,16 @@ std::vector<unsigned char> toneMapToSrgb8(const Image& image, float exposureStop
 
 void writePng(const std::string& path, const Image& image, float exposureStops);
 void writeExr(const std::string& path, const Image& image);  // RGBA, 32-bit float, ZIP
+// Reads an RGBA (or RGB, alpha 1) EXR; throws eikon::Error naming the file.
+Image readExr(const std::string& path);
+
+// How far `test` is from `reference` (same size), over the RGB channels of all pixels.
+struct ImageDifference {
+    double rmse = 0.0;         // root mean square difference
+    double maxAbs = 0.0;       // largest absolute difference
+    double referenceMax = 0.0; // largest reference value, to read the others relatively
+    double meanRelative = 0.0; // mean |difference| / mean |reference|
+};
+ImageDifference compareImages(const Image& test, const Image& reference);
 
 }  // namespace eikon

@@ -4,6 +4,7 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <png.h>
 
@@ -78,6 +79,52 @@ void writeExr(const std::string& path, const Image& image) {
         out.setFrameBuffer(fb);
         out.writePixels(image.height);
     });
+}
+
+Image readExr(const std::string& path) {
+    try {
+        Imf::InputFile in(path.c_str());
+        const Imath::Box2i window = in.header().dataWindow();
+        Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+        Imf::FrameBuffer fb;
+        const size_t xStride = sizeof(glm::vec4);
+        const size_t yStride = xStride * size_t(image.width);
+        char* base = reinterpret_cast<char*>(image.pixels.data()) -
+                     (size_t(window.min.x) + size_t(window.min.y) * size_t(image.width)) * xStride;
+        const char* names[4] = {"R", "G", "B", "A"};
+        for (int c = 0; c < 4; ++c)
+            fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride,
+                                           1, 1, c == 3 ? 1.0 : 0.0));
+        in.setFrameBuffer(fb);
+        in.readPixels(window.min.y, window.max.y);
+        return image;
+    } catch (const std::exception& e) {
+        throw Error(path, std::string("cannot read as EXR: ") + e.what());
+    }
+}
+
+ImageDifference compareImages(const Image& test, const Image& reference) {
+    if (test.width != reference.width || test.height != reference.height)
+        throw Error("compare", "images differ in size: " + std::to_string(test.width) + "x" +
+                                   std::to_string(test.height) + " vs " +
+                                   std::to_string(reference.width) + "x" +
+                                   std::to_string(reference.height));
+    ImageDifference d;
+    double sumSq = 0.0, sumAbs = 0.0, sumRef = 0.0;
+    for (size_t i = 0; i < test.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double r = reference.pixels[i][c];
+            const double diff = double(test.pixels[i][c]) - r;
+            sumSq += diff * diff;
+            sumAbs += std::abs(diff);
+            sumRef += std::abs(r);
+            d.maxAbs = std::max(d.maxAbs, std::abs(diff));
+            d.referenceMax = std::max(d.referenceMax, r);
+        }
+    const double n = 3.0 * double(test.pixels.size());
+    d.rmse = n > 0 ? std::sqrt(sumSq / n) : 0.0;
+    d.meanRelative = sumRef > 0 ? sumAbs / sumRef : 0.0;
+    return d;
 }
 
 }  // namespace eikon

@@ -9,6 +9,7 @@
 #include "core/resample.h"
 #include "core/vdb_import.h"
 #include "render/gl_context.h"
+#include "render/frame_renderer.h"
 #include "render/light_volume.h"
 #include "render/params_buffer.h"
 #include "render/view_params.h"
@@ -171,5 +172,41 @@ TEST_CASE("GPU light volumes equal the CPU twin", "[light][gpu]") {
         for (const auto& t : got) darkest = std::min(darkest, t.x);
         CHECK(darkest < 0.5f);
       }
+    }
+}
+
+TEST_CASE("light volumes rerun only when lights or extinction change", "[light]") {
+    Scene scene;
+    scene.path = "test.json";
+    SourceSpec ball;
+    ball.type = SourceType::Sphere;
+    ball.radius = 0.8f;
+    ball.voxelSize = 0.1f;
+    ball.jsonPath = "/sources/0";
+    scene.sources.push_back(ball);
+    MaterialSpec fog;
+    fog.name = "fog";
+    fog.scattering = glm::vec3(1.0f);
+    scene.materials.push_back(fog);
+    scene.lights.push_back(directional({0.0f, -1.0f, 0.3f}));
+    scene.render.width = 16;
+    scene.render.height = 12;
+    for (Backend backend : {Backend::Cpu, Backend::Gpu}) {
+        FrameRenderer r(scene, backend);
+        r.render(0);
+        CHECK(r.lightVolumeUpdates() == 1);
+        r.scene().camera.automatic = false;
+        r.scene().camera.position = glm::vec3(3.0f, 1.0f, 2.0f);
+        r.render(0);
+        CHECK(r.lightVolumeUpdates() == 1);  // a camera move reuses them
+        r.scene().lights[0].direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
+        r.render(0);
+        CHECK(r.lightVolumeUpdates() == 2);
+        r.scene().materials[0].absorption = glm::vec3(0.5f);
+        r.render(0);
+        CHECK(r.lightVolumeUpdates() == 3);
+        r.scene().render.shadows = ShadowMode::Marched;  // nothing reads them now
+        r.render(0);
+        CHECK(r.lightVolumeUpdates() == 3);
     }
 }

@@ -1,0 +1,220 @@
+// The `eikon` command line as users and scripts see it: output on stdout, one-line errors
+// "eikon: <where>: <reason>" on stderr with a non-zero exit, and no image written or replaced by
+// a render that fails. Runs the built binary (the test target depends on it).
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/test_paths.h"
+
+using eikon::test::scratchDir;
+using eikon::test::sharedData;
+using eikon::test::sourcePath;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out;
+    std::string err;
+};
+
+std::string quoted(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+// Runs `eikon <args>` (arguments already quoted), stdout and stderr to files in `dir`.
+RunResult runEikon(const std::string& args, const std::string& dir) {
+    const std::string binary = std::string(EIKON_BINARY_DIR) + "/apps/eikon";
+    REQUIRE(fs::exists(binary));
+    const std::string out = dir + "/stdout.txt";
+    const std::string err = dir + "/stderr.txt";
+    const std::string command =
+        quoted(binary) + " " + args + " >" + quoted(out) + " 2>" + quoted(err) + " </dev/null";
+    const int status = std::system(command.c_str());
+    RunResult r;
+    REQUIRE(status != -1);
+    REQUIRE(WIFEXITED(status));
+    r.exitCode = WEXITSTATUS(status);
+    r.out = readFile(out);
+    r.err = readFile(err);
+    fs::remove(out);
+    fs::remove(err);
+    return r;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+// Width and height from a PNG's IHDR chunk (big-endian, at bytes 16 and 20).
+std::pair<int, int> pngSize(const std::string& path) {
+    const std::string b = readFile(path);
+    REQUIRE(b.size() > 24);
+    REQUIRE(b.compare(1, 3, "PNG") == 0);
+    auto be32 = [&](size_t at) {
+        return int((unsigned char)b[at]) << 24 | int((unsigned char)b[at + 1]) << 16 |
+               int((unsigned char)b[at + 2]) << 8 | int((unsigned char)b[at + 3]);
+    };
+    return {be32(16), be32(20)};
+}
+
+// A failed command: non-zero exit, nothing on stdout, exactly one line on stderr that reads
+// "eikon: <where>: <reason>", where `where` is "<where>: " (the location and its separator).
+void checkOneLineError(const RunResult& r, const std::string& where) {
+    INFO("exit " << r.exitCode << "\nstdout: " << r.out << "\nstderr: " << r.err);
+    CHECK(r.exitCode != 0);
+    CHECK(r.out.empty());
+    const std::vector<std::string> ls = lines(r.err);
+    REQUIRE(ls.size() == 1);
+    CHECK(r.err.back() == '\n');
+    const std::string prefix = "eikon: " + where;
+    CHECK(ls[0].rfind(prefix, 0) == 0);
+    CHECK(ls[0].size() > prefix.size());  // a reason follows the location
+}
+
+}  // namespace
+
+TEST_CASE("eikon info prints the grids of a Houdini cache", "[cli]") {
+    const std::string dir = scratchDir("cli_info");
+    const std::string file = sharedData("vdb/houdini_smoke1.vdb");
+    const RunResult r = runEikon("info " + quoted(file), dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    CHECK(r.exitCode == 0);
+    CHECK(r.err.empty());
+    CHECK(r.out.rfind(file + ": VDB ", 0) == 0);
+    CHECK(contains(r.out, "1 grid\n"));
+    CHECK(contains(r.out, "  density  float (stored as half), class fog volume\n"));
+    CHECK(contains(r.out, "voxel size (0.476"));
+    CHECK(contains(r.out, "index bounds (1, 2, 1) -> (111, 223, 112)\n"));
+    CHECK(contains(r.out, "world bounds ("));
+    CHECK(contains(r.out, "active voxels 1049275\n"));
+}
+
+TEST_CASE("eikon info on a bad file: one line naming the file, non-zero exit", "[cli]") {
+    const std::string dir = scratchDir("cli_info_bad");
+
+    SECTION("missing") {
+        const std::string file = dir + "/absent.vdb";
+        checkOneLineError(runEikon("info " + quoted(file), dir), file + ": ");
+    }
+    SECTION("truncated") {
+        const std::string source = readFile(sharedData("vdb/houdini_smoke1.vdb"));
+        REQUIRE(source.size() > 100000);
+        const std::string file = dir + "/truncated.vdb";
+        writeFile(file, source.substr(0, source.size() / 2));
+        checkOneLineError(runEikon("info " + quoted(file), dir), file + ": ");
+    }
+    SECTION("a text file") {
+        const std::string file = dir + "/notes.vdb";
+        writeFile(file, "this is not a VDB file, just text\n");
+        checkOneLineError(runEikon("info " + quoted(file), dir), file + ": ");
+    }
+}
+
+TEST_CASE("eikon render of a scene with a misspelt key names the JSON path", "[cli]") {
+    const std::string dir = scratchDir("cli_render_misspelt");
+    const std::string scene = dir + "/misspelt.json";
+    writeFile(scene, R"({
+  "sources": [{"type": "box", "min": [-1, -1, -1], "max": [1, 1, 1]}],
+  "materials": [{"name": "smoke", "absorbtion": [1, 1, 1]}],
+  "render": {"width": 16, "height": 12},
+  "output": {"name": "misspelt", "png": true, "exr": true}
+})");
+    const std::string outDir = dir + "/out";
+    const RunResult r = runEikon("render " + quoted(scene) + " -o " + quoted(outDir), dir);
+    checkOneLineError(r, scene + ":/materials/0/absorbtion: ");
+    CHECK(contains(r.err, "'absorption'"));  // the "did you mean" hint
+    // No image anywhere: not in the output folder, not beside the scene.
+    CHECK_FALSE(fs::exists(outDir + "/misspelt_0000.png"));
+    CHECK_FALSE(fs::exists(outDir + "/misspelt_0000.exr"));
+    for (const auto& entry : fs::recursive_directory_iterator(dir))
+        CHECK(entry.path().extension() != ".png");
+}
+
+TEST_CASE("eikon render writes the homogeneous cube as PNG and EXR", "[cli]") {
+    const std::string dir = scratchDir("cli_render_cube");
+    const std::string outDir = dir + "/out";
+    const RunResult r =
+        runEikon("render " + quoted(sourcePath("data/scenes/homogeneous_cube.json")) + " -o " +
+                     quoted(outDir) + " --size 32x24",
+                 dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    CHECK(r.exitCode == 0);
+    const std::string png = outDir + "/homogeneous_cube_0000.png";
+    const std::string exr = outDir + "/homogeneous_cube_0000.exr";
+    REQUIRE(fs::exists(png));
+    REQUIRE(fs::exists(exr));  // the scene asks for EXR too
+    CHECK(pngSize(png) == std::make_pair(32, 24));
+    CHECK(readFile(exr).compare(0, 4, "\x76\x2f\x31\x01") == 0);  // the OpenEXR magic number
+    CHECK(contains(r.out, "wrote " + png));
+    CHECK(contains(r.out, "wrote " + exr));
+    // Only the two images: no temporary files left behind.
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(outDir)) {
+        INFO(entry.path());
+        ++files;
+    }
+    CHECK(files == 2);
+}
+
+TEST_CASE("a render that fails never replaces an existing image", "[cli]") {
+    // The scene parses, the output folder exists, then loading the sources fails: the VDB file
+    // it names is not there. Images from an earlier run stay as they were.
+    const std::string dir = scratchDir("cli_render_fails");
+    const std::string scene = dir + "/broken.json";
+    writeFile(scene, R"({
+  "sources": [{"type": "vdb", "file": "missing_cache.vdb"}],
+  "materials": [{"name": "smoke", "absorption": [1, 1, 1]}],
+  "camera": "auto",
+  "render": {"width": 16, "height": 12},
+  "output": {"name": "broken", "png": true, "exr": true}
+})");
+    const std::string outDir = dir + "/out";
+    fs::create_directories(outDir);
+    const std::string png = outDir + "/broken_0000.png";
+    const std::string exr = outDir + "/broken_0000.exr";
+    writeFile(png, "an earlier image, not to be overwritten");
+    writeFile(exr, "an earlier EXR, not to be overwritten");
+
+    const RunResult r = runEikon("render " + quoted(scene) + " -o " + quoted(outDir), dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    CHECK(r.exitCode != 0);
+    CHECK_FALSE(contains(r.out, "wrote"));
+    // The error is the last line on stderr (a GL driver may print before it) and names the file.
+    const std::vector<std::string> errLines = lines(r.err);
+    REQUIRE_FALSE(errLines.empty());
+    CHECK(errLines.back().rfind("eikon: ", 0) == 0);
+    CHECK(contains(errLines.back(), "missing_cache.vdb: no such file"));
+    CHECK(contains(errLines.back(), ":/sources/0)"));
+    CHECK(readFile(png) == "an earlier image, not to be overwritten");
+    CHECK(readFile(exr) == "an earlier EXR, not to be overwritten");
+    CHECK_FALSE(fs::exists(png + ".partial"));
+}
