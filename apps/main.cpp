@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
     eikon::app::addInfoCommand(app, exitCode);
     eikon::app::addRenderCommand(app, exitCode);
     eikon::app::addDiffCommand(app, exitCode);
+    eikon::app::addViewCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

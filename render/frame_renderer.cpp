@@ -10,10 +10,14 @@
 
 namespace eikon {
 
-FrameRenderer::FrameRenderer(const Scene& scene, Backend backend)
+FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* context)
     : scene_(scene), backend_(backend), sources_(scene_) {
     if (backend_ == Backend::Gpu) {
-        context_ = createHeadlessContext();
+        if (!context) {
+            ownContext_ = createHeadlessContext();
+            context = ownContext_.get();
+        }
+        gl_ = context;
         textures_ = std::make_unique<VolumeTextures>();
         paramsBuffer_ = std::make_unique<ParamsBuffer>();
         lightVolumesGpu_ = std::make_unique<LightVolumesGpu>();
@@ -29,7 +33,7 @@ FrameRenderer::~FrameRenderer() {
     lightVolumesGpu_.reset();
     paramsBuffer_.reset();
     textures_.reset();
-    context_.reset();
+    ownContext_.reset();
 }
 
 namespace {

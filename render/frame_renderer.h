@@ -28,8 +28,9 @@ enum class Backend { Gpu, Cpu };
 
 class FrameRenderer {
 public:
-    // Gpu creates a headless GL 4.3 context; throws eikon::Error when there is none.
-    FrameRenderer(const Scene& scene, Backend backend);
+    // Gpu renders in `context` (a window's, kept current by the caller) or, when null, in a
+    // headless GL 4.3 context of its own; throws eikon::Error when there is none.
+    FrameRenderer(const Scene& scene, Backend backend, GlContext* context = nullptr);
     ~FrameRenderer();
 
     Image render(int frame);
@@ -39,7 +40,7 @@ public:
     const RenderVolume& volume() const { return volume_; }
     const FieldRegistry& fields() const { return fields_; }
     Backend backend() const { return backend_; }
-    const GlContext* context() const { return context_.get(); }
+    const GlContext* context() const { return gl_; }
     // Stage times summed since the last call (load, resample, upload, light, view, readback).
     std::vector<StageTime> takeStats();
     int uploads() const;
@@ -51,7 +52,8 @@ public:
 private:
     Scene scene_;
     Backend backend_;
-    std::unique_ptr<GlContext> context_;
+    std::unique_ptr<GlContext> ownContext_;
+    GlContext* gl_ = nullptr;  // ownContext_ or the caller's
     SceneSources sources_;
     FieldRegistry fields_;
     std::map<std::string, DenseGrid> dense_;  // by field name

@@ -25,6 +25,9 @@ struct Image {
 std::vector<unsigned char> toneMapToSrgb8(const Image& image, float exposureStops);
 
 void writePng(const std::string& path, const Image& image, float exposureStops);
+// 8-bit sRGB RGB rows, row 0 at the top (what toneMapToSrgb8 returns, or a window's pixels).
+void writePngRgb8(const std::string& path, int width, int height,
+                  const std::vector<unsigned char>& rgb);
 void writeExr(const std::string& path, const Image& image);  // RGBA, 32-bit float, ZIP
 // Reads an RGBA (or RGB, alpha 1) EXR; throws eikon::Error naming the file.
 Image readExr(const std::string& path);

@@ -57,9 +57,16 @@ std::vector<unsigned char> toneMapToSrgb8(const Image& image, float exposureStop
 }
 
 void writePng(const std::string& path, const Image& image, float exposureStops) {
-    const std::vector<unsigned char> rgb = toneMapToSrgb8(image, exposureStops);
+    writePngRgb8(path, image.width, image.height, toneMapToSrgb8(image, exposureStops));
+}
+
+void writePngRgb8(const std::string& path, int width, int height,
+                  const std::vector<unsigned char>& rgb) {
+    if (rgb.size() != size_t(width) * size_t(height) * 3)
+        throw Error(path, "pixel buffer does not match " + std::to_string(width) + "x" +
+                              std::to_string(height) + " RGB");
     writeAtomically(path, [&](const std::string& file) {
-        writePngFile(file, path, image.width, image.height, rgb);
+        writePngFile(file, path, width, height, rgb);
     });
 }
 

@@ -275,8 +275,8 @@ std::string programLog(GLuint program) {
     return log.c_str();
 }
 
-GLuint compileComputeShader(const ShaderSource& source) {
-    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+GLuint compileShader(GLenum stage, const ShaderSource& source) {
+    const GLuint shader = glCreateShader(stage);
     const char* text = source.text.c_str();
     glShaderSource(shader, 1, &text, nullptr);
     glCompileShader(shader);
@@ -292,12 +292,15 @@ GLuint compileComputeShader(const ShaderSource& source) {
     return shader;
 }
 
-GLuint linkProgram(GLuint shader, const ShaderSource& source) {
+// Links the stages (compiled from `source`'s files; `source` maps the log back) and frees them.
+GLuint linkProgram(const std::vector<GLuint>& shaders, const ShaderSource& source) {
     const GLuint program = glCreateProgram();
-    glAttachShader(program, shader);
+    for (GLuint shader : shaders) glAttachShader(program, shader);
     glLinkProgram(program);
-    glDetachShader(program, shader);
-    glDeleteShader(shader);
+    for (GLuint shader : shaders) {
+        glDetachShader(program, shader);
+        glDeleteShader(shader);
+    }
     GLint ok = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     const std::string log = trimmed(rewriteShaderLog(programLog(program), source.files));
@@ -341,8 +344,23 @@ ShaderProgram ShaderProgram::compute(const std::string& relativePath,
     const ShaderSource source = expandShaderSource(relativePath, defines);
     if (!isVersionLine(source.text.substr(0, source.text.find('\n'))))
         throw Error(source.files[0], "a shader starts with #version (e.g. #version 430 core)");
-    const GLuint shader = compileComputeShader(source);
-    return ShaderProgram(linkProgram(shader, source), source.files[0]);
+    const GLuint shader = compileShader(GL_COMPUTE_SHADER, source);
+    return ShaderProgram(linkProgram({shader}, source), source.files[0]);
+}
+
+ShaderProgram ShaderProgram::graphics(const std::string& vertexPath,
+                                      const std::string& fragmentPath) {
+    const ShaderSource vertex = expandShaderSource(vertexPath);
+    const ShaderSource fragment = expandShaderSource(fragmentPath);
+    const GLuint vs = compileShader(GL_VERTEX_SHADER, vertex);
+    GLuint fs = 0;
+    try {
+        fs = compileShader(GL_FRAGMENT_SHADER, fragment);
+    } catch (...) {
+        glDeleteShader(vs);
+        throw;
+    }
+    return ShaderProgram(linkProgram({vs, fs}, fragment), fragment.files[0]);
 }
 
 ShaderProgram::~ShaderProgram() {

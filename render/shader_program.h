@@ -51,6 +51,9 @@ class ShaderProgram {
     static ShaderProgram compute(const std::string& relativePath,
                                  const std::vector<std::string>& defines = {});
 
+    // Compiles and links a vertex + fragment program (the viewer's display pass).
+    static ShaderProgram graphics(const std::string& vertexPath, const std::string& fragmentPath);
+
     ShaderProgram() = default;
     ~ShaderProgram();
     ShaderProgram(ShaderProgram&& other) noexcept;
