@@ -246,3 +246,45 @@ TEST_CASE("double-precision grids are narrowed to float fields", "[vdb]") {
     CHECK(f->tree().getValue(openvdb::Coord(9, 9, 9)) == 0.5f);
     CHECK(f->activeVoxelCount() == 1 + 512);
 }
+
+TEST_CASE("a grid of an unregistered type is skipped by name; the rest of the file loads",
+          "[vdb][bad-input]") {
+    ensureOpenVdbInitialized();
+    const std::string dir = scratchDir("vdb_unregistered");
+    auto density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->tree().setValue(openvdb::Coord(1, 1, 1), 0.5f);
+    auto mystery = openvdb::FloatGrid::create(0.0f);
+    mystery->setName("mystery");
+    mystery->tree().setValue(openvdb::Coord(2, 2, 2), 1.0f);
+    const std::string path = dir + "/unregistered.vdb";
+    openvdb::io::File(path).write({mystery, density});
+
+    // Rename the stored type of "mystery" to one no OpenVDB registers (same length, so every
+    // offset in the file stays valid), as a point grid with an unknown codec or a newer tool's
+    // grid type would look to this build.
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    const size_t name = bytes.find("mystery");
+    REQUIRE(name != std::string::npos);
+    const size_t type = bytes.find("Tree_float_5_4_3", name);
+    REQUIRE(type != std::string::npos);
+    bytes.replace(type, 16, "Tree_flaot_5_4_3");
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+
+    ScopedWarningCapture warnings;
+    FieldRegistry fields;
+    const VdbImportReport report = importVdb(path, fields);
+    CHECK(fields.has("density"));
+    CHECK(fields.floatGrid("density")->tree().getValue(openvdb::Coord(1, 1, 1)) == 0.5f);
+    CHECK_FALSE(fields.has("mystery"));
+    CHECK(warnings.contains("skipped grid mystery: grid type Tree_flaot_5_4_3 is not registered"));
+
+    const VdbFileInfo info = inspectVdb(path);
+    REQUIRE(info.grids.size() == 2);
+    CHECK_FALSE(gridNamed(info, "mystery").readable);
+    CHECK(gridNamed(info, "density").activeVoxels == 1);
+}
