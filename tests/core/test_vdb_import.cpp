@@ -77,7 +77,8 @@ TEST_CASE("Houdini smoke: density, half float, translated origin, as vdb_print r
 
 TEST_CASE("Houdini vel maps to velocity, a constant vec3 field with tiles", "[vdb]") {
     const std::string path = sharedData("vdb/houdini_vel_constant.vdb");
-    const GridInfo& v = gridNamed(inspectVdb(path), "vel");
+    const VdbFileInfo info = inspectVdb(path);  // gridNamed returns a reference into it
+    const GridInfo& v = gridNamed(info, "vel");
     CHECK(v.type == "vec3s");
     CHECK(v.activeVoxels == 1000000);
     CHECK(v.voxelSize[0] == Approx(0.04));
