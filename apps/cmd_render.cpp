@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "apps/backend_choice.h"
 #include "apps/commands.h"
 #include "apps/scene_input.h"
 #include "core/error.h"
@@ -22,7 +23,7 @@ struct RenderOptions {
     std::string frames;
     std::string size;
     bool stats = false;
-    bool cpu = false;
+    std::string backend = "auto";
     bool exr = false;
     std::string shadows;
     float step = 0.0f;
@@ -80,15 +81,11 @@ int runRender(const RenderOptions& o) {
     fs::create_directories(scene.output.directory, ec);
     if (ec) throw Error(scene.output.directory, "cannot create the output folder: " + ec.message());
 
-    FrameRenderer renderer(scene, o.cpu ? Backend::Cpu : Backend::Gpu);
-    if (renderer.context())
-        std::printf("GPU: %s (%s)\n", renderer.context()->rendererName().c_str(),
-                    renderer.context()->versionString().c_str());
-    else
-        std::printf("CPU twin (TBB)\n");
+    BackendChoice choice = chooseBackend(o.backend);
+    FrameRenderer renderer(scene, choice.backend, choice.context.get());
+    std::printf("%s\n", choice.description.c_str());
     const bool softwareGl =
-        renderer.context() && (renderer.context()->rendererName().find("llvmpipe") != std::string::npos ||
-                               renderer.context()->rendererName().find("softpipe") != std::string::npos);
+        renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());
     for (int frame = scene.time.frameStart; frame <= scene.time.frameEnd; ++frame) {
         const Image image = renderer.render(frame);
         const auto t0 = std::chrono::steady_clock::now();
@@ -126,7 +123,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--frames", o->frames, "frame range FIRST-LAST, or one frame");
     cmd->add_option("--size", o->size, "image size WIDTHxHEIGHT");
     cmd->add_flag("--stats", o->stats, "print time per stage (CPU and GPU)");
-    cmd->add_flag("--cpu", o->cpu, "render with the CPU twin instead of the GPU");
+    cmd->add_option("--backend", o->backend,
+                    "auto (GPU unless OpenGL is software or missing), gpu, or cpu (the CPU twin)")
+        ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
     cmd->add_flag("--exr", o->exr, "also write linear HDR EXR");
     cmd->add_option("--shadows", o->shadows, "light transmittance: volume, swept or marched")
         ->check(CLI::IsMember({"volume", "swept", "marched"}));

@@ -23,7 +23,7 @@ namespace {
 struct ViewOptions {
     std::string input;
     std::string size;
-    bool cpu = false;
+    std::string backend = "auto";
     int exitAfter = 0;  // render this many frames (orbiting 10 degrees each), then quit
     std::string screenshot;
 };
@@ -60,7 +60,12 @@ std::string statsLine(const std::vector<StageTime>& stages) {
 int runView(const ViewOptions& o) {
     Scene scene = sceneFromInput(o.input, "", o.size);
     GlfwWindowContext window(scene.render.width, scene.render.height, "eikon view");
-    FrameRenderer renderer(scene, o.cpu ? Backend::Cpu : Backend::Gpu, &window);
+    // "auto": the window's GPU unless it is a software rasterizer (see apps/backend_choice.h).
+    const bool gpu = o.backend == "gpu" ||
+                     (o.backend == "auto" && !isSoftwareRenderer(window.rendererName()));
+    FrameRenderer renderer(scene, gpu ? Backend::Gpu : Backend::Cpu, &window);
+    std::printf("%s: %s\n", gpu ? "GPU" : "CPU twin (display on OpenGL)",
+                window.rendererName().c_str());
     DisplayPass display;
     glfwSetScrollCallback(window.window(),
                           [](GLFWwindow*, double, double dy) { scrollAccumulated += dy; });
@@ -145,7 +150,10 @@ void addViewCommand(CLI::App& app, int& exitCode) {
     auto o = std::make_shared<ViewOptions>();
     cmd->add_option("input", o->input, "scene.json or cache.vdb")->required();
     cmd->add_option("--size", o->size, "window size WIDTHxHEIGHT");
-    cmd->add_flag("--cpu", o->cpu, "render with the CPU twin (the window still needs OpenGL)");
+    cmd->add_option("--backend", o->backend,
+                    "auto (GPU unless OpenGL is software), gpu, or cpu (the window still needs "
+                    "OpenGL)")
+        ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
     cmd->add_option("--exit-after", o->exitAfter,
                     "render this many frames, orbiting 10 degrees each, then quit (for tests)")
         ->check(CLI::PositiveNumber);

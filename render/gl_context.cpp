@@ -576,4 +576,10 @@ GlfwWindowContext::Size GlfwWindowContext::framebufferSize() const {
     return size;
 }
 
+bool isSoftwareRenderer(const std::string& rendererName) {
+    for (const char* name : {"llvmpipe", "softpipe", "swrast"})
+        if (rendererName.find(name) != std::string::npos) return true;
+    return false;
+}
+
 }  // namespace eikon

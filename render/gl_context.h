@@ -66,6 +66,10 @@ private:
     bool debugOutput_ = false;
 };
 
+// Whether a renderer name is a software rasterizer (Mesa llvmpipe, softpipe, swrast): GPU work
+// then runs on the CPU inside the GL calls, and the CPU twin of a stage is usually faster.
+bool isSoftwareRenderer(const std::string& rendererName);
+
 // Whether GL debug output is wanted: debug builds, or the environment sets EIKON_GL_DEBUG=1.
 bool glDebugRequested();
 

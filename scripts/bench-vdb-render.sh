@@ -12,7 +12,7 @@ OUT=$(mktemp -d)
 command -v vdb_render >/dev/null || bash scripts/install-deps.sh
 
 stats() {  # min and median of the arguments
-    printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {printf "%.2f %.2f", a[1], a[int((NR+1)/2)]}'
+    printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {printf "%.2f %.2f\n", a[1], a[int((NR+1)/2)]}'
 }
 
 time_runs() {  # label, command...
@@ -29,15 +29,15 @@ time_runs() {  # label, command...
 }
 
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
-echo "GL: $(./build/apps/eikon render "$SCENE" -o "$OUT" --size 8x6 | head -1)"
+echo "GL: $(./build/apps/eikon render "$SCENE" -o "$OUT" --size 8x6 --backend gpu | head -1)"
 time_runs "vdb_render (peer, -step 1 -shadowstep 3)" \
     vdb_render "$VDB" "$OUT/peer.png" -res 640x480 -cpus 0 -step 1 -shadowstep 3 -gain 0.2 \
     -cutoff 0.005 -light 1,1,0.5,1,1,1 -translate -7.4,40.4,200 -scatter 0.3,0.3,0.3 \
     -absorb 0.05,0.05,0.05
 for mode in volume swept marched; do
     time_runs "eikon GPU (llvmpipe), shadows $mode" \
-        ./build/apps/eikon render "$SCENE" -o "$OUT" --stats --shadows "$mode"
+        ./build/apps/eikon render "$SCENE" -o "$OUT" --stats --backend gpu --shadows "$mode"
     time_runs "eikon CPU twin, shadows $mode" \
-        ./build/apps/eikon render "$SCENE" -o "$OUT" --stats --cpu --shadows "$mode"
+        ./build/apps/eikon render "$SCENE" -o "$OUT" --stats --backend cpu --shadows "$mode"
 done
 rm -rf "$OUT"

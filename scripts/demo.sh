@@ -6,4 +6,5 @@ cd "$(dirname "$0")/.."
 
 bash scripts/build.sh
 mkdir -p out
-./build/apps/eikon render ../shared/data/vdb/houdini_smoke1.vdb -o out/ --stats
+# --backend gpu: the compute shaders, even on llvmpipe (the default would pick the faster CPU twin).
+./build/apps/eikon render ../shared/data/vdb/houdini_smoke1.vdb -o out/ --stats --backend gpu

@@ -218,3 +218,26 @@ TEST_CASE("a render that fails never replaces an existing image", "[cli]") {
     CHECK(readFile(exr) == "an earlier EXR, not to be overwritten");
     CHECK_FALSE(fs::exists(png + ".partial"));
 }
+
+TEST_CASE("eikon render picks and names its backend", "[cli]") {
+    const std::string dir = scratchDir("cli_backend");
+    const std::string scene = quoted(sourcePath("data/scenes/fog_sphere_spot.json"));
+    const RunResult gpu = runEikon("render " + scene + " -o " + quoted(dir + "/gpu") +
+                                       " --size 40x30 --backend gpu", dir);
+    const RunResult cpu = runEikon("render " + scene + " -o " + quoted(dir + "/cpu") +
+                                       " --size 40x30 --backend cpu", dir);
+    const RunResult automatic =
+        runEikon("render " + scene + " -o " + quoted(dir + "/auto") + " --size 40x30", dir);
+    INFO(gpu.out << cpu.out << automatic.out << gpu.err << cpu.err << automatic.err);
+    REQUIRE(gpu.exitCode == 0);
+    REQUIRE(cpu.exitCode == 0);
+    REQUIRE(automatic.exitCode == 0);
+    CHECK(gpu.out.rfind("GPU: ", 0) == 0);
+    CHECK(cpu.out.rfind("CPU twin", 0) == 0);
+    // auto takes the GPU unless OpenGL is a software rasterizer, and says which and why.
+    const bool software = contains(gpu.out, "llvmpipe") || contains(gpu.out, "softpipe");
+    CHECK(contains(automatic.out, software ? "software rasterizer" : "GPU: "));
+    // (Pixel agreement of the two backends is tested in test_view_pass.cpp.)
+    CHECK(pngSize(dir + "/gpu/fog_sphere_spot_0000.png") == std::make_pair(40, 30));
+    CHECK(pngSize(dir + "/cpu/fog_sphere_spot_0000.png") == std::make_pair(40, 30));
+}

@@ -39,7 +39,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 const char* backendName(Backend b) { return b == Backend::Gpu ? "GPU" : "CPU twin"; }
-const char* shadowName(ShadowMode m) { return m == ShadowMode::Volume ? "volume" : "marched"; }
+const char* shadowName(ShadowMode m) {
+    return m == ShadowMode::Volume ? "volume" : m == ShadowMode::Swept ? "swept" : "marched";
+}
 
 SourceSpec boxSource(const std::string& field, glm::vec3 lo, glm::vec3 hi, float value,
                      float falloff = 0.0f, float voxel = 0.05f) {
@@ -227,7 +229,7 @@ TEST_CASE("homogeneous cube: the centre pixel is exp(-kappa d) on both backends"
 }
 
 TEST_CASE("GPU image equals the CPU twin's on a lit, scattering, emitting sphere", "[view]") {
-    for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Marched}) {
+    for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept, ShadowMode::Marched}) {
         Scene scene = litSphere();
         scene.render.shadows = mode;
         const Image gpu = renderFrame(scene, Backend::Gpu);
@@ -371,7 +373,7 @@ TEST_CASE("an opaque blocker between the light and a scattering sphere shadows i
     scene.render.width = 33;
     scene.render.height = 25;
 
-    for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Marched}) {
+    for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept, ShadowMode::Marched}) {
         for (Backend backend : {Backend::Gpu, Backend::Cpu}) {
             INFO(backendName(backend) << ", shadows " << shadowName(mode));
             scene.render.shadows = mode;
@@ -419,7 +421,7 @@ TEST_CASE("single scattering in a slab lit from behind matches the closed form",
     scene.render.width = 33;
     scene.render.height = 25;
 
-    for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Marched}) {
+    for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept, ShadowMode::Marched}) {
         for (Backend backend : {Backend::Gpu, Backend::Cpu}) {
             INFO(backendName(backend) << ", shadows " << shadowName(mode));
             scene.render.shadows = mode;
