@@ -1,5 +1,7 @@
 #include "render/frame_renderer.h"
 
+#include <cstdlib>
+
 #include "core/camera.h"
 #include "core/resample.h"
 #include "render/gl_context.h"
@@ -9,6 +11,20 @@
 #include "render/volume_textures.h"
 
 namespace eikon {
+
+namespace {
+
+// Texture-unit filtering where it is exact enough to keep the GPU equal to the CPU twin: on
+// software rasterizers (float weights, 2-3x faster there). Hardware GPUs filter with 8-bit
+// fractional weights, so they take the 8-tap path unless EIKON_TRILINEAR=hardware asks.
+bool useHardwareTrilinear(const GlContext& gl) {
+    const char* env = std::getenv("EIKON_TRILINEAR");
+    if (env && std::string(env) == "hardware") return true;
+    if (env && std::string(env) == "exact") return false;
+    return isSoftwareRenderer(gl.rendererName());
+}
+
+}  // namespace
 
 FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* context)
     : scene_(scene), backend_(backend), sources_(scene_) {
@@ -20,8 +36,9 @@ FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* con
         gl_ = context;
         textures_ = std::make_unique<VolumeTextures>();
         paramsBuffer_ = std::make_unique<ParamsBuffer>();
-        lightVolumesGpu_ = std::make_unique<LightVolumesGpu>();
-        viewPass_ = std::make_unique<ViewPassGpu>();
+        hardwareTrilinear_ = useHardwareTrilinear(*gl_);
+        lightVolumesGpu_ = std::make_unique<LightVolumesGpu>(hardwareTrilinear_);
+        viewPass_ = std::make_unique<ViewPassGpu>(hardwareTrilinear_);
     }
     timer_ = std::make_unique<GpuStageTimer>(backend_ == Backend::Gpu);
 }

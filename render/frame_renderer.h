@@ -48,6 +48,8 @@ public:
     // How often the light transmittance volumes were computed: only when lights, extinction or
     // fields changed (a camera move reuses them).
     int lightVolumeUpdates() const { return lightVolumeUpdates_; }
+    // Whether the GPU shaders let the texture unit filter (see useHardwareTrilinear).
+    bool hardwareTrilinear() const { return hardwareTrilinear_; }
 
 private:
     Scene scene_;
@@ -67,6 +69,7 @@ private:
     std::unique_ptr<GpuStageTimer> timer_;
     int resamples_ = 0;
     int lightVolumeUpdates_ = 0;
+    bool hardwareTrilinear_ = false;
 };
 
 }  // namespace eikon

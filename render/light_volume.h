@@ -29,7 +29,8 @@ std::vector<LightVolumeCpu> computeLightVolumesCpu(const ViewSetup& setup,
 
 class LightVolumesGpu {
 public:
-    LightVolumesGpu();
+    // hardwareTrilinear: let the texture unit filter (see shaders/shared/sampling.h).
+    explicit LightVolumesGpu(bool hardwareTrilinear = false);
     ~LightVolumesGpu();
     // Recomputes every light's volume from the field textures (already uploaded).
     void compute(const ViewSetup& setup, VolumeTextures& fields, GpuStageTimer* timer);

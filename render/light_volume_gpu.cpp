@@ -9,9 +9,12 @@
 
 namespace eikon {
 
-LightVolumesGpu::LightVolumesGpu()
-    : sweep_(std::make_unique<ShaderProgram>(ShaderProgram::compute("light_sweep.comp"))),
-      march_(std::make_unique<ShaderProgram>(ShaderProgram::compute("light_march.comp"))) {}
+LightVolumesGpu::LightVolumesGpu(bool hardwareTrilinear) {
+    std::vector<std::string> defines;
+    if (hardwareTrilinear) defines.push_back("EK_HARDWARE_TRILINEAR");
+    sweep_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("light_sweep.comp", defines));
+    march_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("light_march.comp", defines));
+}
 
 LightVolumesGpu::~LightVolumesGpu() {
     if (texture_) glDeleteTextures(1, &texture_);
@@ -31,8 +34,7 @@ void LightVolumesGpu::allocate(glm::ivec3 res, int lights) {
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_3D, texture_);
     glTexStorage3D(GL_TEXTURE_3D, 1, GL_RGBA32F, res.x, res.y, res.z * lights);
-    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    setVolumeSampling();
     glActiveTexture(GL_TEXTURE0);
     if (glGetError() != GL_NO_ERROR)
         throw Error("light volumes", "the driver refused " + std::to_string(lights) +

@@ -26,7 +26,8 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
 // textures come from `textures` in slot order.
 class ViewPassGpu {
 public:
-    ViewPassGpu();
+    // hardwareTrilinear: let the texture unit filter (see shaders/shared/sampling.h).
+    explicit ViewPassGpu(bool hardwareTrilinear = false);
     ~ViewPassGpu();
     Image render(const ViewSetup& setup, VolumeTextures& textures, const LightVolumesGpu& lights,
                  GpuStageTimer* timer = nullptr);

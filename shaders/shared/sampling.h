@@ -18,6 +18,12 @@ vec3 worldToVolumeIndex(vec3 world) {
     return (world - vec3(params.volumeMin)) / volumeVoxelSize();
 }
 
+#ifdef EK_HARDWARE_TRILINEAR
+// GLSL only: the texture unit filters (volume_bindings.glsl). On llvmpipe its weights are float
+// and the result matches the CPU twin to ~1e-6; on hardware GPUs they are fixed point (8
+// fractional bits), so the exact path below is their default (render/frame_renderer.cpp).
+vec4 sampleVolume(int slot, vec3 indexPos) { return filterVolume(slot, indexPos); }
+#else
 vec4 sampleVolume(int slot, vec3 indexPos) {
     const ivec3 last = volumeResolution() - ivec3(1);
     const vec3 q = indexPos - vec3(0.5f);
@@ -39,6 +45,7 @@ vec4 sampleVolume(int slot, vec3 indexPos) {
     const vec4 c11 = mix(c011, c111, f.x);
     return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
 }
+#endif
 
 float sampleField(int slot, vec3 indexPos) { return sampleVolume(slot, indexPos).x; }
 
