@@ -45,7 +45,8 @@ Scene defaultSceneForVdb(const std::string& vdbPath) {
     LightSpec sun;
     sun.type = LightType::Directional;
     sun.direction = -glm::normalize(glm::vec3(1.0f, 1.0f, 0.5f));
-    sun.intensity = 3.0f;
+    // 4π: vdb_render leaves out the phase function's 1/(4π); this gives its brightness.
+    sun.intensity = 12.566371f;
     scene.lights.push_back(sun);
 
     scene.output.name = "render";
