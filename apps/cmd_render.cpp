@@ -33,13 +33,16 @@ struct RenderOptions {
 void parseFrames(const std::string& text, TimeSettings& time) {
     int a = 0, b = 0;
     char dash = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d", &a, &dash, &b) == 3 && dash == '-' && a >= 0 && b >= a) {
+    if (std::sscanf(text.c_str(), "%d%c%d", &a, &dash, &b) == 3 && dash == '-' && a >= 0 &&
+        b >= a) {
         time.frameStart = a;
         time.frameEnd = b;
-    } else if (std::sscanf(text.c_str(), "%d", &a) == 1 && a >= 0 && text.find('-') == std::string::npos) {
+    } else if (std::sscanf(text.c_str(), "%d", &a) == 1 && a >= 0 &&
+               text.find('-') == std::string::npos) {
         time.frameStart = time.frameEnd = a;
     } else {
-        throw Error("--frames", "expected FIRST-LAST or one frame (e.g. 0-119), got '" + text + "'");
+        throw Error("--frames",
+                    "expected FIRST-LAST or one frame (e.g. 0-119), got '" + text + "'");
     }
 }
 
@@ -71,8 +74,9 @@ void printStats(const std::vector<StageTime>& stages, double writeMs, bool softw
     }
     std::printf("  %-10s %10.1f %10s\n", "write", writeMs, "-");
     if (softwareGl)
-        std::printf("  (a software GL driver does the GPU work inside the GL calls; its timer queries"
-                    " read ~0, the cpu column is the cost)\n");
+        std::printf(
+            "  (a software GL driver does the GPU work inside the GL calls; its timer queries"
+            " read ~0, the cpu column is the cost)\n");
 }
 
 int runRender(const RenderOptions& o) {
@@ -100,7 +104,8 @@ int runRender(const RenderOptions& o) {
             std::printf("wrote %s\n", path.c_str());
         }
         const double writeMs =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count();
         const auto stats = renderer.takeStats();
         if (o.stats) {
             const RenderVolume& v = renderer.volume();

@@ -61,8 +61,8 @@ int runView(const ViewOptions& o) {
     Scene scene = sceneFromInput(o.input, "", o.size);
     GlfwWindowContext window(scene.render.width, scene.render.height, "eikon view");
     // "auto": the window's GPU unless it is a software rasterizer (see apps/backend_choice.h).
-    const bool gpu = o.backend == "gpu" ||
-                     (o.backend == "auto" && !isSoftwareRenderer(window.rendererName()));
+    const bool gpu =
+        o.backend == "gpu" || (o.backend == "auto" && !isSoftwareRenderer(window.rendererName()));
     FrameRenderer renderer(scene, gpu ? Backend::Gpu : Backend::Cpu, &window);
     std::printf("%s: %s\n", gpu ? "GPU" : "CPU twin (display on OpenGL)",
                 window.rendererName().c_str());
@@ -137,9 +137,8 @@ int runView(const ViewOptions& o) {
         window.swapBuffers();
         if (last) break;
     }
-    std::printf("frames rendered %d, uploads %d, resamples %d, light volume updates %d\n",
-                rendered, renderer.uploads(), renderer.resamples(),
-                renderer.lightVolumeUpdates());
+    std::printf("frames rendered %d, uploads %d, resamples %d, light volume updates %d\n", rendered,
+                renderer.uploads(), renderer.resamples(), renderer.lightVolumeUpdates());
     return 0;
 }
 

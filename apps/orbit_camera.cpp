@@ -32,7 +32,9 @@ void OrbitCamera::orbit(float yawRadians, float pitchRadians) {
     offset_ = rotated;
 }
 
-void OrbitCamera::zoom(float factor) { offset_ *= std::clamp(factor, 0.1f, 10.0f); }
+void OrbitCamera::zoom(float factor) {
+    offset_ *= std::clamp(factor, 0.1f, 10.0f);
+}
 
 CameraSpec OrbitCamera::spec() const {
     CameraSpec s = base_;

@@ -8,9 +8,8 @@ namespace eikon {
 
 const std::vector<std::string>& canonicalFieldNames() {
     static const std::vector<std::string> names = {
-        field::kDensity, field::kTemperature, field::kVelocity,   field::kFlame,
-        field::kColor,   field::kIor,         field::kExtinction, field::kScattering,
-        field::kPhaseG,  field::kEmission};
+        field::kDensity, field::kTemperature, field::kVelocity,   field::kFlame,  field::kColor,
+        field::kIor,     field::kExtinction,  field::kScattering, field::kPhaseG, field::kEmission};
     return names;
 }
 
@@ -19,8 +18,12 @@ bool isCanonicalFieldName(const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-bool Field::isScalar() const { return grid && grid->isType<openvdb::FloatGrid>(); }
-bool Field::isVector() const { return grid && grid->isType<openvdb::Vec3SGrid>(); }
+bool Field::isScalar() const {
+    return grid && grid->isType<openvdb::FloatGrid>();
+}
+bool Field::isVector() const {
+    return grid && grid->isType<openvdb::Vec3SGrid>();
+}
 bool Field::isStaggered() const {
     return isVector() && grid->getGridClass() == openvdb::GRID_STAGGERED;
 }
@@ -58,8 +61,8 @@ const Field& FieldRegistry::get(const std::string& name) const {
     if (it != fields_.end()) return it->second;
     std::string have;
     for (const auto& [n, f] : fields_) have += (have.empty() ? "" : ", ") + n;
-    throw Error("fields", "no field '" + name + "' (fields present: " +
-                              (have.empty() ? "none" : have) + ")");
+    throw Error("fields",
+                "no field '" + name + "' (fields present: " + (have.empty() ? "none" : have) + ")");
 }
 
 openvdb::FloatGrid::ConstPtr FieldRegistry::floatGrid(const std::string& name) const {

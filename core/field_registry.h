@@ -31,14 +31,14 @@ const std::vector<std::string>& canonicalFieldNames();
 bool isCanonicalFieldName(const std::string& name);
 
 struct Field {
-    std::string name;    // canonical name, or the grid's own name when no alias matched
+    std::string name;  // canonical name, or the grid's own name when no alias matched
     openvdb::GridBase::Ptr grid;
     std::string origin;  // where it came from, for messages: "smoke.vdb:density", "/sources/0"
     std::uint64_t version = 0;
 
-    bool isScalar() const;      // float grid
-    bool isVector() const;      // vec3s grid
-    bool isStaggered() const;   // vec3 grid of class staggered (face-centred, MAC)
+    bool isScalar() const;     // float grid
+    bool isVector() const;     // vec3s grid
+    bool isStaggered() const;  // vec3 grid of class staggered (face-centred, MAC)
     // World-space box covered by the active voxels (cell i spans [i-0.5, i+0.5] in index space).
     Bounds3 activeWorldBounds() const;
 };

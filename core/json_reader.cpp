@@ -95,7 +95,7 @@ std::string syntaxErrorDetail(const std::string& what) {
 // be reported where it is. nlohmann keeps the last of two equal keys without a word; in a hand
 // written scene that hides a mistake.
 class DuplicateKeyChecker {
-  public:
+public:
     explicit DuplicateKeyChecker(std::string file) : file_(std::move(file)) {}
 
     bool onEvent(Json::parse_event_t event, const Json& parsed) {
@@ -120,7 +120,7 @@ class DuplicateKeyChecker {
         return true;
     }
 
-  private:
+private:
     struct Frame {
         bool isArray = false;
         std::size_t count = 0;  // elements seen so far (arrays)

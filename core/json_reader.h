@@ -64,7 +64,7 @@ std::string appendPointer(const std::string& pointer, const std::string& key);
 
 // One JSON value and where it sits. Cheap to copy; refers to the document, which must outlive it.
 class Value {
-  public:
+public:
     Value(const Json& json, std::string file, std::string pointer);
 
     const Json& json() const { return *json_; }
@@ -103,7 +103,7 @@ class Value {
     Value child(const std::string& key) const;
     Value element(std::size_t index) const;
 
-  private:
+private:
     const Json* json_;
     std::string file_;
     std::string pointer_;
@@ -112,7 +112,7 @@ class Value {
 // Reads one JSON object. Ask for every key the object may have (optional(), required(), forbid()),
 // then call finish(), which rejects any key that was not asked for.
 class Object {
-  public:
+public:
     // `kind` names the object in messages about keys, e.g. "a directional light"; may be empty.
     explicit Object(const Value& value, std::string kind = "");
 
@@ -135,7 +135,7 @@ class Object {
     // several keys or a default (an "up" vector parallel to the view).
     [[noreturn]] void failAt(const std::string& key, const std::string& reason) const;
 
-  private:
+private:
     void expect(const std::string& key);
     // The object's keys that were not asked for (so far), in file order.
     std::vector<std::string> unexpectedKeys() const;

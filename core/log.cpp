@@ -32,8 +32,12 @@ void setLogSink(LogSink sink) {
     currentSink() = std::move(sink);
 }
 
-void logInfo(const std::string& message) { emit(LogLevel::Info, message); }
-void logWarning(const std::string& message) { emit(LogLevel::Warning, message); }
+void logInfo(const std::string& message) {
+    emit(LogLevel::Info, message);
+}
+void logWarning(const std::string& message) {
+    emit(LogLevel::Warning, message);
+}
 
 ScopedWarningCapture::ScopedWarningCapture() {
     std::lock_guard<std::mutex> lock(sinkMutex());
@@ -43,7 +47,9 @@ ScopedWarningCapture::ScopedWarningCapture() {
     };
 }
 
-ScopedWarningCapture::~ScopedWarningCapture() { setLogSink(previous_); }
+ScopedWarningCapture::~ScopedWarningCapture() {
+    setLogSink(previous_);
+}
 
 bool ScopedWarningCapture::contains(const std::string& fragment) const {
     for (const auto& w : warnings_)

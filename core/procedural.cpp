@@ -15,8 +15,8 @@ openvdb::math::Transform::Ptr cellAlignedTransform(float h) {
 
 // Fills the voxels whose centres lie within `reach` of the shape with value·ramp(distance).
 template <typename SignedDistance>
-openvdb::FloatGrid::Ptr rasterize(glm::vec3 lo, glm::vec3 hi, float value, float falloff,
-                                  float h, SignedDistance distance) {
+openvdb::FloatGrid::Ptr rasterize(glm::vec3 lo, glm::vec3 hi, float value, float falloff, float h,
+                                  SignedDistance distance) {
     auto grid = openvdb::FloatGrid::create(0.0f);
     grid->setTransform(cellAlignedTransform(h));
     grid->setGridClass(openvdb::GRID_FOG_VOLUME);
@@ -40,14 +40,14 @@ openvdb::FloatGrid::Ptr rasterize(glm::vec3 lo, glm::vec3 hi, float value, float
 
 }  // namespace
 
-openvdb::FloatGrid::Ptr makeSphereField(glm::vec3 center, float radius, float value,
-                                        float falloff, float voxelSize) {
+openvdb::FloatGrid::Ptr makeSphereField(glm::vec3 center, float radius, float value, float falloff,
+                                        float voxelSize) {
     return rasterize(center - radius, center + radius, value, falloff, voxelSize,
                      [&](glm::vec3 p) { return glm::length(p - center) - radius; });
 }
 
-openvdb::FloatGrid::Ptr makeBoxField(glm::vec3 boxMin, glm::vec3 boxMax, float value,
-                                     float falloff, float voxelSize) {
+openvdb::FloatGrid::Ptr makeBoxField(glm::vec3 boxMin, glm::vec3 boxMax, float value, float falloff,
+                                     float voxelSize) {
     const glm::vec3 c = 0.5f * (boxMin + boxMax);
     const glm::vec3 halfSize = 0.5f * (boxMax - boxMin);
     return rasterize(boxMin, boxMax, value, falloff, voxelSize, [&](glm::vec3 p) {

@@ -24,8 +24,8 @@ const Field& materialField(const Scene& scene, const FieldRegistry& fields, size
     }
     const Field& f = fields.get(mat.field);
     if (!f.isScalar())
-        throw Error(where, "material '" + mat.name + "' reads field '" + mat.field +
-                               "', a " + f.grid->valueType() + " grid; materials read float fields");
+        throw Error(where, "material '" + mat.name + "' reads field '" + mat.field + "', a " +
+                               f.grid->valueType() + " grid; materials read float fields");
     return f;
 }
 
@@ -77,8 +77,7 @@ DenseGrid resampleToDense(const Field& field, const RenderVolume& volume) {
                 for (int i = 0; i < res.x; ++i) {
                     const glm::vec3 w = volume.voxelCenter(i, j, k);
                     const openvdb::Vec3d ijk = xform.worldToIndex(openvdb::Vec3d(w.x, w.y, w.z));
-                    out.values[out.index(i, j, k)] =
-                        openvdb::tools::BoxSampler::sample(acc, ijk);
+                    out.values[out.index(i, j, k)] = openvdb::tools::BoxSampler::sample(acc, ijk);
                 }
     });
     return out;

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include <glm/vec3.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "core/bounds.h"
 
@@ -67,14 +67,14 @@ enum class LightType { Point, Directional, Spot };
 
 struct LightSpec {
     LightType type = LightType::Directional;
-    glm::vec3 position{0.0f};            // Point, Spot
+    glm::vec3 position{0.0f};                // Point, Spot
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // Directional, Spot: the way the light travels
     glm::vec3 color{1.0f};
     // Directional: irradiance normal to the direction. Point, Spot: radiant intensity (per sr),
     // so irradiance falls off as intensity / r².
     float intensity = 1.0f;
-    float coneAngleDeg = 30.0f;     // Spot: half-angle where the light ends
-    float coneSoftnessDeg = 5.0f;   // Spot: width of the smooth edge inside the cone
+    float coneAngleDeg = 30.0f;    // Spot: half-angle where the light ends
+    float coneSoftnessDeg = 5.0f;  // Spot: width of the smooth edge inside the cone
 };
 
 struct CameraSpec {
@@ -98,10 +98,10 @@ enum class ShadowMode { Volume, Swept, Marched };
 struct RenderSettings {
     int width = 640;
     int height = 480;
-    float stepVoxels = 1.0f;        // view-ray step, in voxels of the render volume
-    float shadowStepVoxels = 3.0f;  // step toward the light
-    float minTransmittance = 1e-3f; // a view ray stops when every channel is below this
-    float exposure = 0.0f;          // stops; the tone map multiplies by 2^exposure
+    float stepVoxels = 1.0f;                 // view-ray step, in voxels of the render volume
+    float shadowStepVoxels = 3.0f;           // step toward the light
+    float minTransmittance = 1e-3f;          // a view ray stops when every channel is below this
+    float exposure = 0.0f;                   // stops; the tone map multiplies by 2^exposure
     ShadowMode shadows = ShadowMode::Swept;  // fastest, and most accurate at default steps
                                              // on smoke (BENCHMARKS.md)
     std::uint32_t seed = 0;

@@ -33,8 +33,8 @@ void SceneSources::addProcedural(const SourceSpec& src, const std::string& origi
         auto previous = fields.floatGrid(src.field)->deepCopy();
         // compMax works in index space: both grids must share the transform.
         if (previous->transform() != grid->transform())
-            throw Error(origin, "shapes that write field '" + src.field +
-                                    "' must share one voxel_size");
+            throw Error(origin,
+                        "shapes that write field '" + src.field + "' must share one voxel_size");
         openvdb::tools::compMax(*grid, *previous);
     }
     proceduralFields_.insert(src.field);
@@ -46,10 +46,16 @@ void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
         const SourceSpec& src = scene_.sources[s];
         std::string key;  // identifies what this source would put in the registry now
         switch (src.type) {
-            case SourceType::Vdb: key = src.file; break;
-            case SourceType::VdbSequence: key = sequences_.at(s).fileForFrame(frame); break;
+            case SourceType::Vdb:
+                key = src.file;
+                break;
+            case SourceType::VdbSequence:
+                key = sequences_.at(s).fileForFrame(frame);
+                break;
             case SourceType::Sphere:
-            case SourceType::Box: key = "procedural"; break;
+            case SourceType::Box:
+                key = "procedural";
+                break;
         }
         if (loadedFile_.count(s) && loadedFile_[s] == key) continue;
         const std::string origin = scene_.path + ":" + src.jsonPath;
@@ -64,7 +70,9 @@ void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
                 }
                 break;
             case SourceType::Sphere:
-            case SourceType::Box: addProcedural(src, origin, fields); break;
+            case SourceType::Box:
+                addProcedural(src, origin, fields);
+                break;
         }
         loadedFile_[s] = key;
     }

@@ -22,9 +22,9 @@ private:
     void addProcedural(const SourceSpec& src, const std::string& origin, FieldRegistry& fields);
 
     const Scene& scene_;
-    std::set<std::string> proceduralFields_;  // fields procedural sources have written
-    std::map<size_t, VdbSequence> sequences_;    // by source index
-    std::map<size_t, std::string> loadedFile_;   // by source index: what is in the registry
+    std::set<std::string> proceduralFields_;    // fields procedural sources have written
+    std::map<size_t, VdbSequence> sequences_;   // by source index
+    std::map<size_t, std::string> loadedFile_;  // by source index: what is in the registry
 };
 
 }  // namespace eikon

@@ -21,8 +21,8 @@ void exportVdb(const std::string& path, const FieldRegistry& registry,
         openvdb::GridBase::Ptr g = f.grid->copyGrid();
         g->setName(exportGridName(name));
         g->setSaveFloatAsHalf(false);
-        if (f.isScalar() && (name == field::kDensity || name == field::kTemperature ||
-                             name == field::kFlame))
+        if (f.isScalar() &&
+            (name == field::kDensity || name == field::kTemperature || name == field::kFlame))
             g->setGridClass(openvdb::GRID_FOG_VOLUME);
         if (f.isVector()) g->setVectorType(openvdb::VEC_CONTRAVARIANT_RELATIVE);
         g->insertMeta("eikon_field", openvdb::StringMetadata(name));

@@ -5,7 +5,6 @@
 #include <mutex>
 #include <set>
 
-
 #include "core/error.h"
 #include "core/log.h"
 #include "core/vdb_reader.h"
@@ -55,8 +54,8 @@ openvdb::Index64 countNonFiniteVectors(const openvdb::Vec3SGrid& grid) {
 
 // Fields whose values are amounts of stuff or optical coefficients: negative is meaningless.
 bool mustBeNonNegative(const std::string& field) {
-    return field == field::kDensity || field == field::kExtinction ||
-           field == field::kScattering || field == field::kFlame;
+    return field == field::kDensity || field == field::kExtinction || field == field::kScattering ||
+           field == field::kFlame;
 }
 
 // Copies the active values (voxels and tiles) of a double-precision grid into its float twin.
@@ -121,13 +120,12 @@ void validate(const std::string& path, const std::string& gridName, const std::s
         if (mustBeNonNegative(fieldName) && s.negative > 0)
             throw Error(path, "grid '" + gridName + "' (" + fieldName + ") has " +
                                   std::to_string(s.negative) + " negative values (minimum " +
-                                  std::to_string(s.minimum) + "); " + fieldName +
-                                  " must be >= 0");
+                                  std::to_string(s.minimum) + "); " + fieldName + " must be >= 0");
     } else if (auto v = dynamic_cast<const openvdb::Vec3SGrid*>(&grid)) {
         const openvdb::Index64 n = countNonFiniteVectors(*v);
         if (n > 0)
-            throw Error(path, "grid '" + gridName + "' has " + std::to_string(n) +
-                                  " NaN/Inf values");
+            throw Error(path,
+                        "grid '" + gridName + "' has " + std::to_string(n) + " NaN/Inf values");
     }
 }
 

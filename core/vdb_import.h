@@ -25,9 +25,9 @@ std::string canonicalFieldFor(const std::string& gridName, const GridAliases& ex
 
 struct VdbImportReport {
     std::string file;
-    std::string creator;                                     // the file's "creator" metadata
-    std::vector<std::pair<std::string, std::string>> loaded; // (field name, grid name(s))
-    std::vector<std::string> skipped;                        // "flags: int32 grid, not a field type"
+    std::string creator;                                      // the file's "creator" metadata
+    std::vector<std::pair<std::string, std::string>> loaded;  // (field name, grid name(s))
+    std::vector<std::string> skipped;  // "flags: int32 grid, not a field type"
 };
 
 VdbImportReport importVdb(const std::string& path, FieldRegistry& registry,

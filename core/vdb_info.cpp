@@ -27,15 +27,20 @@ void valueRange(const GridT& grid, Measure measure, GridInfo& info) {
 void fillValueRange(const openvdb::GridBase& grid, GridInfo& info) {
     using namespace openvdb;
     if (auto g = dynamic_cast<const FloatGrid*>(&grid))
-        valueRange(*g, [](float v) { return double(v); }, info);
+        valueRange(
+            *g, [](float v) { return double(v); }, info);
     else if (auto g = dynamic_cast<const DoubleGrid*>(&grid))
-        valueRange(*g, [](double v) { return v; }, info);
+        valueRange(
+            *g, [](double v) { return v; }, info);
     else if (auto g = dynamic_cast<const Int32Grid*>(&grid))
-        valueRange(*g, [](int32_t v) { return double(v); }, info);
+        valueRange(
+            *g, [](int32_t v) { return double(v); }, info);
     else if (auto g = dynamic_cast<const Vec3SGrid*>(&grid))
-        valueRange(*g, [](const Vec3s& v) { return double(v.length()); }, info);
+        valueRange(
+            *g, [](const Vec3s& v) { return double(v.length()); }, info);
     else if (auto g = dynamic_cast<const Vec3DGrid*>(&grid))
-        valueRange(*g, [](const Vec3d& v) { return v.length(); }, info);
+        valueRange(
+            *g, [](const Vec3d& v) { return v.length(); }, info);
 }
 
 void fillGeometry(const openvdb::GridBase& grid, GridInfo& info) {

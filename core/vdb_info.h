@@ -10,17 +10,17 @@ namespace eikon {
 
 struct GridInfo {
     std::string name;
-    std::string type;        // OpenVDB value type: float, vec3s, int32, ...
-    std::string gridClass;   // fog volume, level set, staggered, unknown
+    std::string type;       // OpenVDB value type: float, vec3s, int32, ...
+    std::string gridClass;  // fog volume, level set, staggered, unknown
     bool savedAsHalf = false;
-    bool readable = true;    // false: type or codec unknown here; only metadata is shown
-    std::string problem;     // why it is not readable
+    bool readable = true;  // false: type or codec unknown here; only metadata is shown
+    std::string problem;   // why it is not readable
     std::array<double, 3> voxelSize{};
     bool empty = true;
-    std::array<int, 3> indexMin{}, indexMax{};        // active voxel bbox, inclusive
-    std::array<double, 3> worldMin{}, worldMax{};     // outer faces of those voxels
-    std::uint64_t activeVoxels = 0;                   // voxels plus voxels in active tiles
-    double minValue = 0, maxValue = 0;                // scalars; vectors: min/max length
+    std::array<int, 3> indexMin{}, indexMax{};     // active voxel bbox, inclusive
+    std::array<double, 3> worldMin{}, worldMax{};  // outer faces of those voxels
+    std::uint64_t activeVoxels = 0;                // voxels plus voxels in active tiles
+    double minValue = 0, maxValue = 0;             // scalars; vectors: min/max length
 };
 
 struct VdbFileInfo {

@@ -86,8 +86,7 @@ VdbReader::VdbReader(const std::string& path) : path_(path), impl_(std::make_uni
                 e.blockPos = gd.getBlockPos();
                 e.endPos = gd.getEndPos();
             }
-            if (e.gridPos < 0 || e.gridPos > e.endPos ||
-                std::uintmax_t(e.endPos) > impl_->fileSize)
+            if (e.gridPos < 0 || e.gridPos > e.endPos || std::uintmax_t(e.endPos) > impl_->fileSize)
                 throw Error(path, "grid '" + e.name + "' should end at byte " +
                                       std::to_string(e.endPos) + " but the file has " +
                                       std::to_string(impl_->fileSize) +
@@ -114,8 +113,8 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
     const Entry& e = entries_.at(index);
     const std::string what = "grid '" + e.name + "'";
     if (!e.registered)
-        throw UnsupportedGridError(path_, what + " has type " + e.type +
-                                              ", which is not registered here");
+        throw UnsupportedGridError(path_,
+                                   what + " has type " + e.type + ", which is not registered here");
     try {
         const openvdb::io::GridDescriptor& gd = impl_->descriptors[index];
         openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(e.type);

@@ -26,7 +26,7 @@ class VdbReader {
 public:
     struct Entry {
         std::string name;
-        std::string type;        // as stored, without the half-float suffix
+        std::string type;  // as stored, without the half-float suffix
         bool savedAsHalf = false;
         bool registered = true;  // false: OpenVDB here cannot create this grid type
         std::string instanceParent;

@@ -10,8 +10,8 @@ namespace eikon {
 
 struct VdbSequence {
     std::string directory;
-    std::string prefix;  // "fluid_data_" (separator included)
-    int digits = 0;      // zero padding of the frame numbers seen
+    std::string prefix;                 // "fluid_data_" (separator included)
+    int digits = 0;                     // zero padding of the frame numbers seen
     std::map<int, std::string> frames;  // frame -> path
     std::vector<int> missing;           // frames between the first and last that are absent
 

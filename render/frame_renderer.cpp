@@ -74,7 +74,9 @@ std::vector<unsigned char> lightVolumeInputs(const ViewSetup& setup,
 
 }  // namespace
 
-int FrameRenderer::uploads() const { return textures_ ? textures_->uploads() : 0; }
+int FrameRenderer::uploads() const {
+    return textures_ ? textures_->uploads() : 0;
+}
 
 std::vector<StageTime> FrameRenderer::takeStats() {
     std::vector<StageTime> out = timer_->results();

@@ -16,7 +16,7 @@ struct StageTime {
 };
 
 class GpuStageTimer {
-  public:
+public:
     // With gpuQueries (needs a current GL context) GPU time is measured where the driver supports
     // timer queries; otherwise, or with gpuQueries = false (CPU twin, no GL), it reads -1.
     explicit GpuStageTimer(bool gpuQueries = true);
@@ -37,7 +37,7 @@ class GpuStageTimer {
 
     bool gpuTiming() const { return gpu_; }
 
-  private:
+private:
     struct Stage {
         std::string name;
         unsigned long long gpuNs = 0;

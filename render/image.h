@@ -18,7 +18,9 @@ struct Image {
     Image() = default;
     Image(int w, int h) : width(w), height(h), pixels(size_t(w) * size_t(h), glm::vec4(0.0f)) {}
     glm::vec4& at(int x, int y) { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
-    const glm::vec4& at(int x, int y) const { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
+    const glm::vec4& at(int x, int y) const {
+        return pixels[size_t(y) * size_t(width) + size_t(x)];
+    }
 };
 
 // Exposure (2^stops), then the sRGB transfer curve, clamped to [0, 1] and rounded to 8 bits.
@@ -34,10 +36,10 @@ Image readExr(const std::string& path);
 
 // How far `test` is from `reference` (same size), over the RGB channels of all pixels.
 struct ImageDifference {
-    double rmse = 0.0;         // root mean square difference
-    double maxAbs = 0.0;       // largest absolute difference
-    double referenceMax = 0.0; // largest reference value, to read the others relatively
-    double meanRelative = 0.0; // mean |difference| / mean |reference|
+    double rmse = 0.0;          // root mean square difference
+    double maxAbs = 0.0;        // largest absolute difference
+    double referenceMax = 0.0;  // largest reference value, to read the others relatively
+    double meanRelative = 0.0;  // mean |difference| / mean |reference|
 };
 ImageDifference compareImages(const Image& test, const Image& reference);
 

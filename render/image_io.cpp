@@ -37,8 +37,7 @@ void writePngFile(const std::string& file, const std::string& nameForErrors, int
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_write_info(png, info);
-    for (int y = 0; y < height; ++y)
-        png_write_row(png, rgb.data() + size_t(y) * size_t(width) * 3);
+    for (int y = 0; y < height; ++y) png_write_row(png, rgb.data() + size_t(y) * size_t(width) * 3);
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
     if (std::fclose(fp) != 0) throw Error(nameForErrors, "could not finish writing (disk full?)");
@@ -65,9 +64,8 @@ void writePngRgb8(const std::string& path, int width, int height,
     if (rgb.size() != size_t(width) * size_t(height) * 3)
         throw Error(path, "pixel buffer does not match " + std::to_string(width) + "x" +
                               std::to_string(height) + " RGB");
-    writeAtomically(path, [&](const std::string& file) {
-        writePngFile(file, path, width, height, rgb);
-    });
+    writeAtomically(path,
+                    [&](const std::string& file) { writePngFile(file, path, width, height, rgb); });
 }
 
 void writeExr(const std::string& path, const Image& image) {

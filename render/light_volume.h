@@ -1,7 +1,8 @@
 #pragma once
 // Light transmittance volumes (shaders/shared/light_volume.h) on the GPU and the CPU twin: one
-// RGB volume per light (on the GPU all in one texture, stacked along z) at the render resolution, holding exp(−∫κ) from each voxel centre toward
-// the light. The viewing pass reads them instead of marching a shadow ray from every sample.
+// RGB volume per light (on the GPU all in one texture, stacked along z) at the render resolution,
+// holding exp(−∫κ) from each voxel centre toward the light. The viewing pass reads them instead of
+// marching a shadow ray from every sample.
 #include <memory>
 #include <vector>
 

@@ -26,8 +26,10 @@ void LightVolumesGpu::allocate(glm::ivec3 res, int lights) {
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
     if (res.z * lights > maxSize)
         throw Error("light volumes", std::to_string(lights) + " light volume(s) of depth " +
-                                         std::to_string(res.z) + " exceed this driver's 3D texture "
-                                         "size of " + std::to_string(maxSize) +
+                                         std::to_string(res.z) +
+                                         " exceed this driver's 3D texture "
+                                         "size of " +
+                                         std::to_string(maxSize) +
                                          " (lower the volume resolution or the light count)");
     if (texture_) glDeleteTextures(1, &texture_);
     glGenTextures(1, &texture_);

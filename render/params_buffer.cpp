@@ -4,7 +4,9 @@
 
 namespace eikon {
 
-ParamsBuffer::ParamsBuffer() { glGenBuffers(1, &buffer_); }
+ParamsBuffer::ParamsBuffer() {
+    glGenBuffers(1, &buffer_);
+}
 
 ParamsBuffer::~ParamsBuffer() {
     if (buffer_) glDeleteBuffers(1, &buffer_);

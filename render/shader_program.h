@@ -45,7 +45,7 @@ std::string loadShaderSource(const std::string& path);
 std::string rewriteShaderLog(const std::string& log, const std::vector<std::string>& files);
 
 class ShaderProgram {
-  public:
+public:
     // Compiles and links a compute shader (needs a current context). Throws
     // Error("<shader file>", rewritten log) when compiling or linking fails.
     static ShaderProgram compute(const std::string& relativePath,
@@ -79,7 +79,7 @@ class ShaderProgram {
     void setUVec3(const std::string& uniform, const glm::uvec3& value) const;
     void setMat4(const std::string& uniform, const glm::mat4& value) const;
 
-  private:
+private:
     ShaderProgram(unsigned int id, std::string name) : id_(id), name_(std::move(name)) {}
 
     unsigned int id_ = 0;

@@ -10,7 +10,9 @@
 namespace eikon {
 namespace {
 
-glm::vec4 v4(glm::vec3 v, float w = 0.0f) { return glm::vec4(v, w); }
+glm::vec4 v4(glm::vec3 v, float w = 0.0f) {
+    return glm::vec4(v, w);
+}
 
 shared::GpuLight packLight(const LightSpec& l) {
     shared::GpuLight g{};
@@ -18,7 +20,8 @@ shared::GpuLight packLight(const LightSpec& l) {
     if (l.type == LightType::Directional) type = EK_LIGHT_DIRECTIONAL;
     if (l.type == LightType::Spot) type = EK_LIGHT_SPOT;
     const float cosOuter = std::cos(glm::radians(l.coneAngleDeg));
-    const float cosInner = std::cos(glm::radians(std::max(l.coneAngleDeg - l.coneSoftnessDeg, 0.0f)));
+    const float cosInner =
+        std::cos(glm::radians(std::max(l.coneAngleDeg - l.coneSoftnessDeg, 0.0f)));
     g.position = v4(l.position, type);
     g.direction = v4(glm::normalize(l.direction), cosOuter);
     // smoothstep(outer, inner, cos) needs inner > outer; a hard edge gets a hair of width.
@@ -28,9 +31,12 @@ shared::GpuLight packLight(const LightSpec& l) {
 
 int shadowModeCode(ShadowMode mode) {
     switch (mode) {
-        case ShadowMode::Marched: return EK_SHADOWS_MARCHED;
-        case ShadowMode::Swept: return EK_SHADOWS_SWEPT;
-        case ShadowMode::Volume: break;
+        case ShadowMode::Marched:
+            return EK_SHADOWS_MARCHED;
+        case ShadowMode::Swept:
+            return EK_SHADOWS_SWEPT;
+        case ShadowMode::Volume:
+            break;
     }
     return EK_SHADOWS_VOLUME;
 }
@@ -39,8 +45,8 @@ int shadowModeCode(ShadowMode mode) {
 
 ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera) {
     if (scene.materials.size() > EK_MAX_MATERIALS)
-        throw Error(scene.path + ":/materials", "at most " + std::to_string(EK_MAX_MATERIALS) +
-                                                    " materials are supported");
+        throw Error(scene.path + ":/materials",
+                    "at most " + std::to_string(EK_MAX_MATERIALS) + " materials are supported");
     if (scene.lights.size() > EK_MAX_LIGHTS)
         throw Error(scene.path + ":/lights",
                     "at most " + std::to_string(EK_MAX_LIGHTS) + " lights are supported");

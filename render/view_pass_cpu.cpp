@@ -2,8 +2,8 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
-#include "render/volume_kernels_cpu.h"
 #include "render/view_pass.h"
+#include "render/volume_kernels_cpu.h"
 
 namespace eikon {
 
@@ -20,15 +20,17 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     for (size_t s = 0; s < slotGrids.size(); ++s) {
         const glm::ivec3 res = slotGrids[s]->volume.resolution;
         if (res != glm::ivec3(p.resolution.x, p.resolution.y, p.resolution.z))
-            throw Error("view pass (CPU)", "field '" + slotGrids[s]->field +
-                                               "' was resampled on a different volume");
+            throw Error("view pass (CPU)",
+                        "field '" + slotGrids[s]->field + "' was resampled on a different volume");
         kernel.fields[s] = slotGrids[s]->values.data();
     }
     Image image(p.image.x, p.image.y);
-    tbb::parallel_for(tbb::blocked_range<int>(0, image.height), [&](const tbb::blocked_range<int>& r) {
-        for (int y = r.begin(); y != r.end(); ++y)
-            for (int x = 0; x < image.width; ++x) image.at(x, y) = kernel.renderPixel(x, y);
-    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, image.height),
+                      [&](const tbb::blocked_range<int>& r) {
+                          for (int y = r.begin(); y != r.end(); ++y)
+                              for (int x = 0; x < image.width; ++x)
+                                  image.at(x, y) = kernel.renderPixel(x, y);
+                      });
     return image;
 }
 

@@ -11,9 +11,9 @@ namespace eikon {
 
 ViewPassGpu::ViewPassGpu(bool hardwareTrilinear)
     : program_(std::make_unique<ShaderProgram>(ShaderProgram::compute(
-          "view_straight.comp",
-          hardwareTrilinear ? std::vector<std::string>{"EK_HARDWARE_TRILINEAR"}
-                            : std::vector<std::string>{}))) {}
+          "view_straight.comp", hardwareTrilinear
+                                    ? std::vector<std::string>{"EK_HARDWARE_TRILINEAR"}
+                                    : std::vector<std::string>{}))) {}
 
 ViewPassGpu::~ViewPassGpu() {
     if (outputTexture_) glDeleteTextures(1, &outputTexture_);
@@ -49,11 +49,12 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, image.pixels.data());
     if (timer) timer->end();
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
-        throw Error("view pass", "OpenGL error 0x" + [&] {
-            char buf[16];
-            std::snprintf(buf, sizeof(buf), "%04x", err);
-            return std::string(buf);
-        }());
+        throw Error(
+            "view pass", "OpenGL error 0x" + [&] {
+                char buf[16];
+                std::snprintf(buf, sizeof(buf), "%04x", err);
+                return std::string(buf);
+            }());
     return image;
 }
 

@@ -25,8 +25,11 @@ struct VolumeAccessCpu {
         return lights[slot - EK_MAX_MATERIALS][voxelIndex(v)];
     }
 
+    // The shared files are order-sensitive in GLSL; keep their order here too.
+    // clang-format off
 #include "shaders/shared/sampling.h"
 #include "shaders/shared/optics.h"
+    // clang-format on
 };
 
 struct ViewKernelCpu : VolumeAccessCpu {

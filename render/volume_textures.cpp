@@ -48,8 +48,8 @@ int VolumeTextures::update(const std::vector<const DenseGrid*>& slotGrids) {
         Slot& slot = slots_[size_t(s)];
         if (grid.volume.resolution != res)
             throw Error("upload", "field '" + grid.field + "' was resampled on another volume");
-        if (slot.version == grid.version && slot.field == grid.field && slot.volume == grid.volume &&
-            grid.version != 0)
+        if (slot.version == grid.version && slot.field == grid.field &&
+            slot.volume == grid.volume && grid.version != 0)
             continue;
         glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, s * res.z, res.x, res.y, res.z, GL_RED, GL_FLOAT,
                         grid.values.data());

@@ -37,7 +37,8 @@ SourceSpec sphere(glm::vec3 c, float r, float value, float voxel) {
 
 }  // namespace
 
-TEST_CASE("a cell-aligned box resamples to its value, with auto bounds and resolution", "[resample]") {
+TEST_CASE("a cell-aligned box resamples to its value, with auto bounds and resolution",
+          "[resample]") {
     ensureOpenVdbInitialized();
     FieldRegistry fields;
     fields.set("density", makeBoxField(glm::vec3(-1.0f), glm::vec3(1.0f), 0.75f, 0.0f, 0.05f),
@@ -80,14 +81,15 @@ TEST_CASE("resampling follows the field's transform: a translated field gives a 
 TEST_CASE("procedural shapes on one field form a union; mismatched voxels are an error",
           "[resample][sources]") {
     Scene scene = sceneReading("density");
-    scene.sources = {sphere({-0.5f, 0, 0}, 0.4f, 1.0f, 0.05f), sphere({0.5f, 0, 0}, 0.4f, 2.0f, 0.05f)};
+    scene.sources = {sphere({-0.5f, 0, 0}, 0.4f, 1.0f, 0.05f),
+                     sphere({0.5f, 0, 0}, 0.4f, 2.0f, 0.05f)};
     FieldRegistry fields;
     SceneSources(scene).loadFrame(0, fields);
     auto grid = fields.floatGrid("density");
     const auto& xform = grid->transform();
     auto valueAt = [&](glm::vec3 p) {
-        return openvdb::tools::BoxSampler::sample(grid->tree(),
-                                                  xform.worldToIndex(openvdb::Vec3d(p.x, p.y, p.z)));
+        return openvdb::tools::BoxSampler::sample(
+            grid->tree(), xform.worldToIndex(openvdb::Vec3d(p.x, p.y, p.z)));
     };
     CHECK(valueAt({-0.5f, 0, 0}) == Approx(1.0f));
     CHECK(valueAt({0.5f, 0, 0}) == Approx(2.0f));

@@ -199,8 +199,7 @@ TEST_CASE("NaN, Inf and negative density are rejected with a count", "[vdb][bad-
     acc.setValue(openvdb::Coord(3, 0, 0), std::numeric_limits<float>::quiet_NaN());
     acc.setValue(openvdb::Coord(4, 0, 0), std::numeric_limits<float>::infinity());
     openvdb::io::File(dir + "/nan.vdb").write({grid});
-    CHECK(importError(dir + "/nan.vdb") ==
-          dir + "/nan.vdb: grid 'density' has 2 NaN/Inf values");
+    CHECK(importError(dir + "/nan.vdb") == dir + "/nan.vdb: grid 'density' has 2 NaN/Inf values");
 
     acc.setValue(openvdb::Coord(3, 0, 0), -0.5f);
     acc.setValue(openvdb::Coord(4, 0, 0), 1.0f);
@@ -225,8 +224,9 @@ TEST_CASE("a file with no usable grid is an error naming what was skipped", "[vd
     flags->tree().setValue(openvdb::Coord(1, 2, 3), 7);
     openvdb::io::File(dir + "/flags.vdb").write({flags});
     const std::string message = importError(dir + "/flags.vdb");
-    CHECK(message == dir + "/flags.vdb: no usable grid (skipped: flags: int32 grid, not a field "
-                           "type (float, double, vec3s, vec3d))");
+    CHECK(message == dir +
+                         "/flags.vdb: no usable grid (skipped: flags: int32 grid, not a field "
+                         "type (float, double, vec3s, vec3d))");
     openvdb::io::File(dir + "/empty.vdb").write(openvdb::GridPtrVec{});
     CHECK(importError(dir + "/empty.vdb") ==
           dir + "/empty.vdb: no usable grid (the file holds none)");

@@ -222,10 +222,10 @@ TEST_CASE("a render that fails never replaces an existing image", "[cli]") {
 TEST_CASE("eikon render picks and names its backend", "[cli]") {
     const std::string dir = scratchDir("cli_backend");
     const std::string scene = quoted(sourcePath("data/scenes/fog_sphere_spot.json"));
-    const RunResult gpu = runEikon("render " + scene + " -o " + quoted(dir + "/gpu") +
-                                       " --size 40x30 --backend gpu", dir);
-    const RunResult cpu = runEikon("render " + scene + " -o " + quoted(dir + "/cpu") +
-                                       " --size 40x30 --backend cpu", dir);
+    const RunResult gpu = runEikon(
+        "render " + scene + " -o " + quoted(dir + "/gpu") + " --size 40x30 --backend gpu", dir);
+    const RunResult cpu = runEikon(
+        "render " + scene + " -o " + quoted(dir + "/cpu") + " --size 40x30 --backend cpu", dir);
     const RunResult automatic =
         runEikon("render " + scene + " -o " + quoted(dir + "/auto") + " --size 40x30", dir);
     INFO(gpu.out << cpu.out << automatic.out << gpu.err << cpu.err << automatic.err);

@@ -17,7 +17,7 @@ namespace {
 
 // Sets an environment variable for one test and puts the old value back.
 class ScopedEnv {
-  public:
+public:
     ScopedEnv(const char* name, const char* value) : name_(name) {
         const char* old = std::getenv(name);
         hadOld_ = old != nullptr;
@@ -32,7 +32,7 @@ class ScopedEnv {
         }
     }
 
-  private:
+private:
     std::string name_;
     std::string old_;
     bool hadOld_ = false;

@@ -9,8 +9,8 @@
 #include "core/procedural.h"
 #include "core/resample.h"
 #include "core/vdb_import.h"
-#include "render/gl_context.h"
 #include "render/frame_renderer.h"
+#include "render/gl_context.h"
 #include "render/light_volume.h"
 #include "render/params_buffer.h"
 #include "render/view_params.h"
@@ -45,9 +45,10 @@ struct BoxScene {
         scene.volume.resolution = glm::ivec3(resolution);
         scene.render.width = scene.render.height = 8;
         scene.render.shadows = shadows;
-        fields.set("density", makeBoxField(glm::vec3(-1.0f), glm::vec3(1.0f), 1.0f, 0.0f,
-                                           2.0f / float(resolution)),
-                   "test");
+        fields.set(
+            "density",
+            makeBoxField(glm::vec3(-1.0f), glm::vec3(1.0f), 1.0f, 0.0f, 2.0f / float(resolution)),
+            "test");
         volume = chooseRenderVolume(scene, fields);
         density = resampleToDense(fields.get("density"), volume);
         setup = makeViewSetup(scene, volume, makeCameraFrame(scene.camera, volume.bounds, 8, 8));
@@ -152,29 +153,30 @@ TEST_CASE("GPU light volumes equal the CPU twin", "[light][gpu]") {
     spot.direction = glm::normalize(glm::vec3(1.0f, -0.2f, 0.0f));
     for (const LightSpec& light :
          {directional({0, -1, 0}), directional({1.0f, -2.0f, 0.5f}), point, spot}) {
-      for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept}) {
-       for (bool hardwareTrilinear : {false, true}) {
-        BoxScene s(light, 20, mode);
-        const LightVolumeCpu cpu = s.cpu()[0];
-        VolumeTextures textures;
-        textures.update({&s.density});
-        ParamsBuffer params;
-        params.upload(s.setup.params);
-        LightVolumesGpu gpu(hardwareTrilinear);
-        gpu.compute(s.setup, textures, nullptr);
-        const LightVolumeCpu got = gpu.download(0);
-        REQUIRE(got.size() == cpu.size());
-        double worst = 0.0;
-        for (size_t i = 0; i < cpu.size(); ++i)
-            for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(got[i][c] - cpu[i][c])));
-        INFO("light type " << int(light.type) << ": max |GPU - CPU| = " << worst);
-        CHECK(worst < 1e-5);
-        // And the volume is not trivially 1: the far side is in shadow.
-        float darkest = 1.0f;
-        for (const auto& t : got) darkest = std::min(darkest, t.x);
-        CHECK(darkest < 0.5f);
-       }
-      }
+        for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept}) {
+            for (bool hardwareTrilinear : {false, true}) {
+                BoxScene s(light, 20, mode);
+                const LightVolumeCpu cpu = s.cpu()[0];
+                VolumeTextures textures;
+                textures.update({&s.density});
+                ParamsBuffer params;
+                params.upload(s.setup.params);
+                LightVolumesGpu gpu(hardwareTrilinear);
+                gpu.compute(s.setup, textures, nullptr);
+                const LightVolumeCpu got = gpu.download(0);
+                REQUIRE(got.size() == cpu.size());
+                double worst = 0.0;
+                for (size_t i = 0; i < cpu.size(); ++i)
+                    for (int c = 0; c < 3; ++c)
+                        worst = std::max(worst, double(std::abs(got[i][c] - cpu[i][c])));
+                INFO("light type " << int(light.type) << ": max |GPU - CPU| = " << worst);
+                CHECK(worst < 1e-5);
+                // And the volume is not trivially 1: the far side is in shadow.
+                float darkest = 1.0f;
+                for (const auto& t : got) darkest = std::min(darkest, t.x);
+                CHECK(darkest < 0.5f);
+            }
+        }
     }
 }
 

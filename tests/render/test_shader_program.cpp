@@ -31,7 +31,7 @@ std::vector<std::string> lines(const std::string& text) {
 
 // Points EIKON_SHADER_DIR elsewhere for one test and restores it.
 class ScopedShaderDir {
-  public:
+public:
     explicit ScopedShaderDir(const std::string& dir) {
         if (const char* old = std::getenv("EIKON_SHADER_DIR")) old_ = old;
         setenv("EIKON_SHADER_DIR", dir.c_str(), 1);
@@ -44,7 +44,7 @@ class ScopedShaderDir {
         }
     }
 
-  private:
+private:
     std::string old_;
 };
 

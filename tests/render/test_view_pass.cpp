@@ -38,7 +38,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-const char* backendName(Backend b) { return b == Backend::Gpu ? "GPU" : "CPU twin"; }
+const char* backendName(Backend b) {
+    return b == Backend::Gpu ? "GPU" : "CPU twin";
+}
 const char* shadowName(ShadowMode m) {
     return m == ShadowMode::Volume ? "volume" : m == ShadowMode::Swept ? "swept" : "marched";
 }
@@ -159,7 +161,9 @@ Image renderFrame(const Scene& scene, Backend backend) {
     return renderer.render(0);
 }
 
-glm::vec4 centrePixel(const Image& image) { return image.at(image.width / 2, image.height / 2); }
+glm::vec4 centrePixel(const Image& image) {
+    return image.at(image.width / 2, image.height / 2);
+}
 
 std::vector<char> fileBytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -259,7 +263,7 @@ TEST_CASE("rendering twice gives byte-identical PNG and EXR files", "[view]") {
         const std::string prefix = dir + "/" + (backend == Backend::Gpu ? "gpu" : "cpu");
         FrameRenderer first(scene, backend);
         const Image a = first.render(0);
-        const Image again = first.render(0);  // the same renderer, nothing changed
+        const Image again = first.render(0);          // the same renderer, nothing changed
         const Image b = renderFrame(scene, backend);  // a fresh renderer
         CHECK(a.pixels == again.pixels);
         CHECK(a.pixels == b.pixels);
@@ -410,8 +414,8 @@ TEST_CASE("single scattering in a slab lit from behind matches the closed form",
     const double E = 2.0;
     const glm::vec3 sigma(0.5f, 1.5f, 3.0f);
     Scene scene;
-    scene.sources.push_back(boxSource("density", glm::vec3(-1.0f, -1.0f, -0.5f),
-                                      glm::vec3(1.0f, 1.0f, 0.5f), 1.0f));
+    scene.sources.push_back(
+        boxSource("density", glm::vec3(-1.0f, -1.0f, -0.5f), glm::vec3(1.0f, 1.0f, 0.5f), 1.0f));
     scene.materials.push_back(material("scatterer", "density", glm::vec3(0.0f), sigma, 0.0f));
     scene.lights.push_back(directionalLight(glm::vec3(0.0f, 0.0f, 1.0f), float(E)));
     // The volume is the slab, on the source's own voxel centres: density 1 everywhere inside.
