@@ -1,0 +1,89 @@
+#pragma once
+// Refraction volumes, pipeline stages 2 and 3 of Sun et al. 2008 (docs: shaders/shared/
+// refraction.h, shaders/shared/octree.h), on the GPU and in the CPU twin. Both are RGBA32F
+// volumes at the render resolution, x fastest like DenseGrid:
+//  - gradient: xyz = ∇n in scene units, w = n, at each voxel centre;
+//  - octree:   x = label (pyramid level, as a float), y = Δs_max in scene units
+//              (kUnlimitedStep where the labelled node is flat within ε), z, w = n_min, n_max of
+//              the labelled node.
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/dense_grid.h"
+#include "render/view_params.h"
+
+namespace eikon {
+
+class GpuStageTimer;
+class ShaderProgram;
+class VolumeTextures;
+
+// The octree's tolerances and step bounds (paper defaults, §5.3). Steps are in voxels of the
+// render volume's smallest edge, converted to scene units when the labels are written.
+struct OctreeSettings {
+    float epsilon = 0.005f;        // a node flatter than this is a leaf with unlimited steps
+    float epsilonPrime = 0.02f;    // a node flatter than this is a leaf with steps capped...
+    float stepLimitVoxels = 8.0f;  // ...at this
+    float minStepVoxels = 1.0f;    // Δs_max where no node of level ≥ 1 is within epsilonPrime
+};
+
+// Δs_max of a node flat within ε (EK_UNLIMITED_STEP in shaders/shared/octree.h).
+constexpr float kUnlimitedStep = 1e30f;
+
+using RefractionVolumeCpu = std::vector<glm::vec4>;  // x fastest, like DenseGrid
+
+// Levels of the min/max pyramid for a volume of `resolution` voxels (0 = voxels .. coarsest).
+int octreeLevelCount(glm::ivec3 resolution);
+// Nodes per axis at a pyramid level, and the nodes of all levels together.
+glm::ivec3 octreeLevelSize(glm::ivec3 resolution, int level);
+size_t octreePyramidNodeCount(glm::ivec3 resolution);
+// Δs in scene units for `voxels` voxels of the render volume's smallest edge.
+float octreeStepInScene(const ViewSetup& setup, float voxels);
+
+// CPU twins, parallel over voxels; results do not depend on the thread count.
+RefractionVolumeCpu computeIndexGradientCpu(const ViewSetup& setup,
+                                            const std::vector<const DenseGrid*>& slotGrids);
+// From the gradient volume's n (w).
+RefractionVolumeCpu computeOctreeCpu(const ViewSetup& setup, const RefractionVolumeCpu& gradient,
+                                     const OctreeSettings& settings = {});
+
+class RefractionVolumesGpu {
+public:
+    // The gradient reads voxel values only (texelFetch), so there is no sampling path to choose.
+    RefractionVolumesGpu();
+    ~RefractionVolumesGpu();
+    RefractionVolumesGpu(const RefractionVolumesGpu&) = delete;
+    RefractionVolumesGpu& operator=(const RefractionVolumesGpu&) = delete;
+
+    // Recomputes the gradient volume from the field textures (already uploaded) and the params
+    // SSBO (already bound at binding 0), then the octree from its n. Timer stages: "gradient",
+    // "octree".
+    void compute(const ViewSetup& setup, VolumeTextures& fields,
+                 const OctreeSettings& settings = {}, GpuStageTimer* timer = nullptr);
+
+    unsigned gradientTexture() const { return gradient_; }
+    unsigned octreeTexture() const { return octree_; }
+    // Read back for tests (compared with the CPU twins).
+    RefractionVolumeCpu downloadGradient() const;
+    RefractionVolumeCpu downloadOctree() const;
+
+private:
+    void allocate(glm::ivec3 resolution);
+    void computeGradient(glm::ivec3 resolution);
+    void computeOctree(const ViewSetup& setup, const OctreeSettings& settings);
+    RefractionVolumeCpu download(unsigned texture) const;
+
+    std::unique_ptr<ShaderProgram> gradientProgram_;
+    std::unique_ptr<ShaderProgram> minMaxProgram_;
+    std::unique_ptr<ShaderProgram> labelProgram_;
+    unsigned gradient_ = 0;
+    unsigned octree_ = 0;
+    unsigned pyramid_ = 0;  // SSBO: every level's (n_min, n_max), see shaders/shared/octree.h
+    glm::ivec3 resolution_{0};
+};
+
+}  // namespace eikon

@@ -1,0 +1,115 @@
+#include <algorithm>
+
+#include <tbb/blocked_range.h>
+#include <tbb/blocked_range3d.h>
+#include <tbb/parallel_for.h>
+
+#include "render/refraction_volume.h"
+#include "render/volume_kernels_cpu.h"
+
+EK_NAMESPACE_BEGIN
+
+// What shaders/refraction_gradient.comp sees: the field volumes and the params.
+struct RefractionKernelCpu : VolumeAccessCpu {
+#include "shaders/shared/refraction.h"
+};
+
+// What the octree shaders see: the pyramid SSBO.
+struct OctreeKernelCpu {
+    const vec2* pyramid = nullptr;
+    vec2 fetchPyramid(int index) const { return pyramid[index]; }
+
+#include "shaders/shared/octree.h"
+};
+
+EK_NAMESPACE_END
+
+namespace eikon {
+
+namespace {
+
+glm::ivec3 resolutionOf(const ViewSetup& setup) {
+    return glm::ivec3(setup.params.resolution);
+}
+
+// Calls f(voxel, flat index) for every voxel, in parallel; each voxel is written by one call.
+template <typename F>
+void forEachVoxel(glm::ivec3 res, const F& f) {
+    tbb::parallel_for(tbb::blocked_range3d<int>(0, res.z, 0, res.y, 0, res.x),
+                      [&](const tbb::blocked_range3d<int>& r) {
+                          for (int z = r.pages().begin(); z != r.pages().end(); ++z)
+                              for (int y = r.rows().begin(); y != r.rows().end(); ++y)
+                                  for (int x = r.cols().begin(); x != r.cols().end(); ++x) {
+                                      const size_t i =
+                                          (size_t(z) * size_t(res.y) + size_t(y)) * size_t(res.x) +
+                                          size_t(x);
+                                      f(glm::ivec3(x, y, z), i);
+                                  }
+                      });
+}
+
+// Level 0 from n, then each level from the one below, level by level as the GPU passes do.
+std::vector<glm::vec2> buildPyramid(glm::ivec3 res, const RefractionVolumeCpu& gradient) {
+    shared::OctreeKernelCpu k;
+    const int levels = k.pyramidLevelCount(res);
+    std::vector<glm::vec2> pyramid(octreePyramidNodeCount(res));
+    for (size_t i = 0; i < gradient.size(); ++i) pyramid[i] = glm::vec2(gradient[i].w);
+    k.pyramid = pyramid.data();
+    for (int level = 1; level < levels; ++level) {
+        const glm::ivec3 size = k.pyramidLevelSize(res, level);
+        const size_t offset = size_t(k.pyramidLevelOffset(res, level));
+        // Nodes of one level only read the level below: written in parallel, in any order.
+        forEachVoxel(size, [&](glm::ivec3 node, size_t i) {
+            pyramid[offset + i] = k.pyramidNodeFromChildren(res, level, node);
+        });
+    }
+    return pyramid;
+}
+
+}  // namespace
+
+int octreeLevelCount(glm::ivec3 resolution) {
+    return shared::OctreeKernelCpu{}.pyramidLevelCount(resolution);
+}
+
+glm::ivec3 octreeLevelSize(glm::ivec3 resolution, int level) {
+    return shared::OctreeKernelCpu{}.pyramidLevelSize(resolution, level);
+}
+
+size_t octreePyramidNodeCount(glm::ivec3 resolution) {
+    shared::OctreeKernelCpu k;
+    return size_t(k.pyramidLevelOffset(resolution, k.pyramidLevelCount(resolution)));
+}
+
+float octreeStepInScene(const ViewSetup& setup, float voxels) {
+    shared::VolumeAccessCpu access{setup.params};
+    const glm::vec3 h = access.volumeVoxelSize();
+    return voxels * std::min(h.x, std::min(h.y, h.z));
+}
+
+RefractionVolumeCpu computeIndexGradientCpu(const ViewSetup& setup,
+                                            const std::vector<const DenseGrid*>& slotGrids) {
+    shared::RefractionKernelCpu kernel{{setup.params}};
+    for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
+    const glm::ivec3 res = resolutionOf(setup);
+    RefractionVolumeCpu out(size_t(res.x) * size_t(res.y) * size_t(res.z));
+    forEachVoxel(res, [&](glm::ivec3 v, size_t i) { out[i] = kernel.gradientAtVoxel(v); });
+    return out;
+}
+
+RefractionVolumeCpu computeOctreeCpu(const ViewSetup& setup, const RefractionVolumeCpu& gradient,
+                                     const OctreeSettings& settings) {
+    const glm::ivec3 res = resolutionOf(setup);
+    const std::vector<glm::vec2> pyramid = buildPyramid(res, gradient);
+    shared::OctreeKernelCpu k;
+    k.pyramid = pyramid.data();
+    const float stepLimit = octreeStepInScene(setup, settings.stepLimitVoxels);
+    const float minStep = octreeStepInScene(setup, settings.minStepVoxels);
+    RefractionVolumeCpu out(gradient.size());
+    forEachVoxel(res, [&](glm::ivec3 v, size_t i) {
+        out[i] = k.octreeLabel(res, v, settings.epsilon, settings.epsilonPrime, stepLimit, minStep);
+    });
+    return out;
+}
+
+}  // namespace eikon

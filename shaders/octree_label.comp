@@ -1,0 +1,24 @@
+#version 430 core
+// Labels every voxel with its octree leaf level and Δs_max (shaders/shared/octree.h) from the
+// finished min/max pyramid.
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+#include "shared/platform.h"
+
+layout(std430, binding = 3) readonly buffer PyramidBlock { vec2 pyramid[]; };
+layout(rgba32f, binding = 2) writeonly uniform image3D outOctree;
+uniform ivec3 resolution;  // voxels
+uniform float epsilon;
+uniform float epsilonPrime;
+uniform float stepLimit;  // scene units
+uniform float minStep;    // scene units
+
+vec2 fetchPyramid(int index) { return pyramid[index]; }
+
+#include "shared/octree.h"
+
+void main() {
+    const ivec3 v = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(v, resolution))) return;
+    imageStore(outOctree, v, octreeLabel(resolution, v, epsilon, epsilonPrime, stepLimit, minStep));
+}

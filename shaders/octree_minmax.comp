@@ -1,0 +1,28 @@
+#version 430 core
+// One level of the octree's min/max pyramid (shaders/shared/octree.h): level 0 from n in the
+// gradient volume, each coarser level from the one below; the host dispatches the levels in order
+// with a storage barrier between them.
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+#include "shared/platform.h"
+
+layout(std430, binding = 3) buffer PyramidBlock { vec2 pyramid[]; };
+layout(rgba32f, binding = 2) readonly uniform image3D gradientVolume;  // w: n
+uniform ivec3 resolution;  // voxels
+uniform int level;
+
+vec2 fetchPyramid(int index) { return pyramid[index]; }
+
+#include "shared/octree.h"
+
+void main() {
+    const ivec3 node = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(node, pyramidLevelSize(resolution, level)))) return;
+    const int index = pyramidNodeIndex(resolution, level, node);
+    if (level == 0) {
+        const float n = imageLoad(gradientVolume, node).w;
+        pyramid[index] = vec2(n, n);
+    } else {
+        pyramid[index] = pyramidNodeFromChildren(resolution, level, node);
+    }
+}

@@ -1,0 +1,15 @@
+#version 430 core
+// Pipeline stage 2: n and ∇n at every voxel centre (shaders/shared/refraction.h), written to the
+// gradient volume (render/refraction_volume_gpu.cpp).
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+#include "volume_bindings.glsl"
+#include "shared/refraction.h"
+
+layout(rgba32f, binding = 2) writeonly uniform image3D outGradient;  // xyz: ∇n; w: n
+
+void main() {
+    const ivec3 v = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(v, volumeResolution()))) return;
+    imageStore(outGradient, v, gradientAtVoxel(v));
+}

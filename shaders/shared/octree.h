@@ -1,0 +1,85 @@
+// The octree of Sun et al. 2008 (§4.2, amended in §5.3) as a dense volume, the same on the GPU and
+// in the CPU twin. Functions only; needs from the includer `vec2 fetchPyramid(int index)`, the
+// (n_min, n_max) stored at a flat pyramid index (pyramidNodeIndex).
+//
+// Pyramid: level 0 holds one node per voxel (n_min = n_max = n at its centre); a node of level k
+// covers 2^k voxels per axis, so level k has ceil(resolution / 2^k) nodes per axis (the last node
+// of an axis that is not a power of two covers fewer voxels), up to the coarsest level K, a
+// single node covering the whole volume. All levels lie in one flat array, level after level,
+// each x fastest, then y, then z.
+//
+// Labelling rule (one reading of §4.2 with the §5.3 amendment, written down here because the
+// paper leaves the interplay of the two tolerances open). For each voxel, walk the nodes that
+// contain it from level K down to level 1; the first node whose range r = n_max − n_min satisfies
+//   r < ε   gives the label k and Δs_max = EK_UNLIMITED_STEP ("infinity"), or
+//   r < ε'  gives the label k and Δs_max = stepLimit (the user's limit, 8 voxels by default).
+// A voxel is labelled once: the coarsest qualifying node wins, as in §4.2, so a node with a
+// little variation (ε ≤ r < ε') is preferred over finer, flat nodes — the "intermediate step
+// sizes" §5.3 introduces: larger than the finer nodes' boundaries allow, yet capped.
+// When no node of level 1 or coarser has r < ε', the voxel gets label 0 and Δs_max = minStep
+// (the user's minimum step): a level-0 node is a single sample whose range is always 0, so it
+// says nothing about how n varies around the voxel, and marching there takes the minimum step.
+// Steps are in scene units.
+
+#define EK_UNLIMITED_STEP 1e30f
+
+// Nodes per axis at pyramid level `level`.
+ivec3 pyramidLevelSize(ivec3 res, int level) {
+    const int span = 1 << level;
+    return (res + ivec3(span - 1)) / ivec3(span);
+}
+
+// Number of levels, 0..K: K is the first level whose single node covers every axis.
+int pyramidLevelCount(ivec3 res) {
+    const int longest = max(res.x, max(res.y, res.z));
+    int top = 0;
+    while ((1 << top) < longest) ++top;
+    return top + 1;
+}
+
+int pyramidNodeCount(ivec3 res, int level) {
+    const ivec3 s = pyramidLevelSize(res, level);
+    return s.x * s.y * s.z;
+}
+
+// Flat index of the first node of `level`.
+int pyramidLevelOffset(ivec3 res, int level) {
+    int offset = 0;
+    for (int k = 0; k < level; ++k) offset += pyramidNodeCount(res, k);
+    return offset;
+}
+
+int pyramidNodeIndex(ivec3 res, int level, ivec3 node) {
+    const ivec3 s = pyramidLevelSize(res, level);
+    return pyramidLevelOffset(res, level) + (node.z * s.y + node.y) * s.x + node.x;
+}
+
+// (n_min, n_max) of node `node` at level ≥ 1 from its up to 8 children at level − 1; children
+// past the edge of a non-power-of-two axis are clamped onto the last one, which changes neither
+// the minimum nor the maximum.
+vec2 pyramidNodeFromChildren(ivec3 res, int level, ivec3 node) {
+    const ivec3 last = pyramidLevelSize(res, level - 1) - ivec3(1);
+    vec2 range = vec2(EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP);
+    for (int dz = 0; dz < 2; ++dz)
+        for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx) {
+                const ivec3 child = min(node * ivec3(2) + ivec3(dx, dy, dz), last);
+                const vec2 c = fetchPyramid(pyramidNodeIndex(res, level - 1, child));
+                range = vec2(min(range.x, c.x), max(range.y, c.y));
+            }
+    return range;
+}
+
+// x: label (level, as a float); y: Δs_max in scene units; z, w: n_min, n_max of the labelled
+// node. See the rule at the top of this file.
+vec4 octreeLabel(ivec3 res, ivec3 voxel, float epsilon, float epsilonPrime, float stepLimit,
+                 float minStep) {
+    for (int level = pyramidLevelCount(res) - 1; level >= 1; --level) {
+        const vec2 r = fetchPyramid(pyramidNodeIndex(res, level, voxel / ivec3(1 << level)));
+        const float range = r.y - r.x;
+        if (range < epsilon) return vec4(float(level), EK_UNLIMITED_STEP, r.x, r.y);
+        if (range < epsilonPrime) return vec4(float(level), stepLimit, r.x, r.y);
+    }
+    const vec2 r0 = fetchPyramid(pyramidNodeIndex(res, 0, voxel));
+    return vec4(0.0f, minStep, r0.x, r0.y);
+}

@@ -1,0 +1,54 @@
+// Refractive index n and its gradient ∇n (Sun et al. 2008, pipeline stage 2), the same on the GPU
+// and in the CPU twin. Functions only; needs sampling.h (params, fetchVolume, sampleField, ...).
+//
+// Each material adds (ior − 1) per unit of its field to vacuum's n = 1, so fields that fade out
+// fade to n = 1 and overlapping materials add their excess index.
+
+// `precise` keeps the GLSL compiler from reassociating the sum (Mesa turned f·(ior − 1) + n into
+// a different rounding, 1 ulp off the CPU twin); C++ already evaluates it as written.
+#ifdef __cplusplus
+#define EK_PRECISE
+#else
+#define EK_PRECISE precise
+#endif
+
+float refractiveIndexAt(vec3 indexPos) {
+    EK_PRECISE float n = 1.0f;
+    for (int m = 0; m < params.resolution.w; ++m) {
+        const float f = sampleField(params.materials[m].slot.x, indexPos);
+        n += f * (params.materials[m].emission.w - 1.0f);
+    }
+    return n;
+}
+
+// n at the centre of voxel v: the stored field values themselves, which is what the trilinear
+// refractiveIndexAt returns there (its weights are 0 and 1), at one fetch per material instead
+// of eight, and with no texture-unit rounding on either sampling path.
+float refractiveIndexAtVoxel(ivec3 v) {
+    EK_PRECISE float n = 1.0f;
+    for (int m = 0; m < params.resolution.w; ++m) {
+        const float f = fetchVolume(params.materials[m].slot.x, v).x;
+        n += f * (params.materials[m].emission.w - 1.0f);
+    }
+    return n;
+}
+
+// xyz: ∇n in scene units (per world unit along each axis); w: n, both at the centre of voxel v.
+// Central differences of n at the neighbouring voxel centres; one-sided at the volume's faces,
+// where the outer neighbour does not exist (clamping it would halve the gradient there). An axis
+// one voxel thick has no difference to take: its component is 0.
+vec4 gradientAtVoxel(ivec3 v) {
+    const ivec3 res = volumeResolution();
+    const vec3 h = volumeVoxelSize();
+    vec3 grad = vec3(0.0f);
+    for (int a = 0; a < 3; ++a) {
+        ivec3 lo = v;
+        ivec3 hi = v;
+        lo[a] = max(v[a] - 1, 0);
+        hi[a] = min(v[a] + 1, res[a] - 1);
+        if (hi[a] == lo[a]) continue;
+        const float dn = refractiveIndexAtVoxel(hi) - refractiveIndexAtVoxel(lo);
+        grad[a] = dn / (float(hi[a] - lo[a]) * h[a]);
+    }
+    return vec4(grad, refractiveIndexAtVoxel(v));
+}
