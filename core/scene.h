@@ -60,7 +60,7 @@ struct MaterialSpec {
     glm::vec3 scattering{0.0f};
     float g = 0.0f;  // Henyey–Greenstein anisotropy, in (−1, 1)
     glm::vec3 emission{0.0f};
-    float ior = 1.0f;  // ≥ 1; used by the relighting pipeline
+    float ior = 1.0f;  // ≥ 1; ≠ 1 bends the view rays (render/refraction_volume.h)
 };
 
 enum class LightType { Point, Directional, Spot };

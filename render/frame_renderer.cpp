@@ -6,6 +6,7 @@
 #include "core/resample.h"
 #include "render/gl_context.h"
 #include "render/params_buffer.h"
+#include "render/refraction_volume.h"
 #include "render/view_params.h"
 #include "render/view_pass.h"
 #include "render/volume_textures.h"
@@ -39,6 +40,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* con
         hardwareTrilinear_ = useHardwareTrilinear(*gl_);
         lightVolumesGpu_ = std::make_unique<LightVolumesGpu>(hardwareTrilinear_);
         viewPass_ = std::make_unique<ViewPassGpu>(hardwareTrilinear_);
+        refractionGpu_ = std::make_unique<RefractionVolumesGpu>();
     }
     timer_ = std::make_unique<GpuStageTimer>(backend_ == Backend::Gpu);
 }
@@ -47,6 +49,7 @@ FrameRenderer::~FrameRenderer() {
     // GL objects go before the context that owns them.
     timer_.reset();
     viewPass_.reset();
+    refractionGpu_.reset();
     lightVolumesGpu_.reset();
     paramsBuffer_.reset();
     textures_.reset();
@@ -65,6 +68,28 @@ std::vector<unsigned char> lightVolumeInputs(const ViewSetup& setup,
     p.background = glm::vec4(0.0f);
     const auto* bytes = reinterpret_cast<const unsigned char*>(&p);
     std::vector<unsigned char> key(bytes, bytes + sizeof(p));
+    for (const DenseGrid* g : grids) {
+        const auto* v = reinterpret_cast<const unsigned char*>(&g->version);
+        key.insert(key.end(), v, v + sizeof(g->version));
+    }
+    return key;
+}
+
+// The bytes the ∇n volume depends on: the volume, the materials' ior and field slots, and the
+// versions of the field grids.
+std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
+                                          const std::vector<const DenseGrid*>& grids) {
+    const shared::GpuViewParams& p = setup.params;
+    std::vector<float> values = {p.volumeMin.x, p.volumeMin.y, p.volumeMin.z,
+                                 p.volumeMax.x, p.volumeMax.y, p.volumeMax.z,
+                                 float(p.resolution.x), float(p.resolution.y),
+                                 float(p.resolution.z), float(p.resolution.w)};
+    for (int m = 0; m < p.resolution.w; ++m) {
+        values.push_back(p.materials[m].emission.w);
+        values.push_back(float(p.materials[m].slot.x));
+    }
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+    std::vector<unsigned char> key(bytes, bytes + values.size() * sizeof(float));
     for (const DenseGrid* g : grids) {
         const auto* v = reinterpret_cast<const unsigned char*>(&g->version);
         key.insert(key.end(), v, v + sizeof(g->version));
@@ -110,8 +135,19 @@ Image FrameRenderer::render(int frame) {
     std::vector<unsigned char> lightInputs;
     if (needLights) lightInputs = lightVolumeInputs(setup, slotGrids);
     const bool lightsChanged = needLights && lightInputs != lightInputs_;
+    const bool curved = setup.params.pipeline.x != 0;
+    std::vector<unsigned char> refractionInputs;
+    if (curved) refractionInputs = gradientInputs(setup, slotGrids);
+    const bool gradientChanged = curved && refractionInputs != gradientInputs_;
 
     if (backend_ == Backend::Cpu) {
+        if (gradientChanged) {
+            timer_->begin("gradient");
+            gradientCpu_ = computeIndexGradientCpu(setup, slotGrids);
+            timer_->end();
+            gradientInputs_ = std::move(refractionInputs);
+            ++gradientUpdates_;
+        }
         if (lightsChanged) {
             timer_->begin("light");
             lightVolumesCpu_ = computeLightVolumesCpu(setup, slotGrids);
@@ -119,7 +155,8 @@ Image FrameRenderer::render(int frame) {
         }
         timer_->begin("view");
         Image image = renderViewCpu(setup, slotGrids,
-                                    needLights ? lightVolumesCpu_ : std::vector<LightVolumeCpu>{});
+                                    needLights ? lightVolumesCpu_ : std::vector<LightVolumeCpu>{},
+                                    curved ? gradientCpu_ : std::vector<glm::vec4>{});
         timer_->end();
         if (lightsChanged) {
             lightInputs_ = std::move(lightInputs);
@@ -131,12 +168,18 @@ Image FrameRenderer::render(int frame) {
     textures_->update(slotGrids);
     paramsBuffer_->upload(setup.params);
     timer_->end();
+    if (gradientChanged) {
+        refractionGpu_->compute(setup, *textures_, {}, timer_.get(), /*withOctree=*/false);
+        gradientInputs_ = std::move(refractionInputs);
+        ++gradientUpdates_;
+    }
     if (lightsChanged) {
         lightVolumesGpu_->compute(setup, *textures_, timer_.get());
         lightInputs_ = std::move(lightInputs);
         ++lightVolumeUpdates_;
     }
-    return viewPass_->render(setup, *textures_, *lightVolumesGpu_, timer_.get());
+    return viewPass_->render(setup, *textures_, *lightVolumesGpu_,
+                             curved ? refractionGpu_->gradientTexture() : 0u, timer_.get());
 }
 
 }  // namespace eikon

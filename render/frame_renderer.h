@@ -20,6 +20,7 @@ namespace eikon {
 
 class GlContext;
 class LightVolumesGpu;
+class RefractionVolumesGpu;
 class ParamsBuffer;
 class VolumeTextures;
 class ViewPassGpu;
@@ -48,6 +49,9 @@ public:
     // How often the light transmittance volumes were computed: only when lights, extinction or
     // fields changed (a camera move reuses them).
     int lightVolumeUpdates() const { return lightVolumeUpdates_; }
+    // How often the ∇n volume was computed: only for scenes with some ior ≠ 1, and only when
+    // fields, materials' ior or the volume changed.
+    int gradientUpdates() const { return gradientUpdates_; }
     // Whether the GPU shaders let the texture unit filter (see useHardwareTrilinear).
     bool hardwareTrilinear() const { return hardwareTrilinear_; }
 
@@ -65,10 +69,14 @@ private:
     std::unique_ptr<LightVolumesGpu> lightVolumesGpu_;
     std::unique_ptr<ViewPassGpu> viewPass_;
     std::vector<LightVolumeCpu> lightVolumesCpu_;
+    std::unique_ptr<RefractionVolumesGpu> refractionGpu_;
+    std::vector<glm::vec4> gradientCpu_;
+    std::vector<unsigned char> gradientInputs_;  // what the ∇n volume was computed from
     std::vector<unsigned char> lightInputs_;  // what the light volumes were computed from
     std::unique_ptr<GpuStageTimer> timer_;
     int resamples_ = 0;
     int lightVolumeUpdates_ = 0;
+    int gradientUpdates_ = 0;
     bool hardwareTrilinear_ = false;
 };
 

@@ -62,8 +62,10 @@ public:
     // Recomputes the gradient volume from the field textures (already uploaded) and the params
     // SSBO (already bound at binding 0), then the octree from its n. Timer stages: "gradient",
     // "octree".
+    // withOctree = false computes the gradient only (the viewing pass needs no octree).
     void compute(const ViewSetup& setup, VolumeTextures& fields,
-                 const OctreeSettings& settings = {}, GpuStageTimer* timer = nullptr);
+                 const OctreeSettings& settings = {}, GpuStageTimer* timer = nullptr,
+                 bool withOctree = true);
 
     unsigned gradientTexture() const { return gradient_; }
     unsigned octreeTexture() const { return octree_; }

@@ -72,13 +72,15 @@ void RefractionVolumesGpu::allocate(glm::ivec3 res) {
 }
 
 void RefractionVolumesGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
-                                   const OctreeSettings& settings, GpuStageTimer* timer) {
+                                   const OctreeSettings& settings, GpuStageTimer* timer,
+                                   bool withOctree) {
     const glm::ivec3 res(setup.params.resolution);
     allocate(res);
     fields.bind();
     if (timer) timer->begin("gradient");
     computeGradient(res);
     if (timer) timer->end();
+    if (!withOctree) return;
     if (timer) timer->begin("octree");
     computeOctree(setup, settings);
     if (timer) timer->end();

@@ -78,6 +78,10 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
         g.slot = glm::ivec4(int(slot - setup.slotFields.begin()), 0, 0, 0);
     }
     for (size_t l = 0; l < scene.lights.size(); ++l) p.lights[l] = packLight(scene.lights[l]);
+    // n ≡ 1 everywhere takes straight rays and needs no ∇n volume.
+    bool refracts = false;
+    for (const MaterialSpec& mat : scene.materials) refracts = refracts || mat.ior != 1.0f;
+    p.pipeline = glm::ivec4(refracts ? 1 : 0, 0, 0, 0);
     return setup;
 }
 

@@ -19,8 +19,11 @@ class ShaderProgram;
 
 // CPU twin: rows in parallel (TBB), each pixel independent, so the result does not depend on the
 // thread count. `lightVolumes` may be empty when viewNeedsLightVolumes(setup) is false.
+// `gradient` is the ∇n volume (render/refraction_volume.h) when setup.params.pipeline.x asks for
+// curved rays, else empty.
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
-                    const std::vector<LightVolumeCpu>& lightVolumes);
+                    const std::vector<LightVolumeCpu>& lightVolumes,
+                    const std::vector<glm::vec4>& gradient = {});
 
 // GPU pass; needs a current GL 4.3 context and the frame's parameters in the ParamsBuffer. Field
 // textures come from `textures` in slot order.
@@ -29,8 +32,9 @@ public:
     // hardwareTrilinear: let the texture unit filter (see shaders/shared/sampling.h).
     explicit ViewPassGpu(bool hardwareTrilinear = false);
     ~ViewPassGpu();
+    // gradientTexture: the ∇n volume for curved rays (0 when the rays are straight).
     Image render(const ViewSetup& setup, VolumeTextures& textures, const LightVolumesGpu& lights,
-                 GpuStageTimer* timer = nullptr);
+                 unsigned gradientTexture, GpuStageTimer* timer = nullptr);
 
 private:
     std::unique_ptr<ShaderProgram> program_;

@@ -8,7 +8,8 @@
 namespace eikon {
 
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
-                    const std::vector<LightVolumeCpu>& lightVolumes) {
+                    const std::vector<LightVolumeCpu>& lightVolumes,
+                    const std::vector<glm::vec4>& gradient) {
     const shared::GpuViewParams& p = setup.params;
     if (slotGrids.size() != setup.slotFields.size())
         throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
@@ -17,6 +18,11 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     if (viewNeedsLightVolumes(setup) && int(lightVolumes.size()) != p.image.z)
         throw Error("view pass (CPU)", "the light volumes were not computed");
     for (size_t l = 0; l < lightVolumes.size(); ++l) kernel.lights[l] = lightVolumes[l].data();
+    if (p.pipeline.x != 0) {
+        if (gradient.size() != size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z))
+            throw Error("view pass (CPU)", "curved rays need the gradient volume");
+        kernel.gradient = gradient.data();
+    }
     for (size_t s = 0; s < slotGrids.size(); ++s) {
         const glm::ivec3 res = slotGrids[s]->volume.resolution;
         if (res != glm::ivec3(p.resolution.x, p.resolution.y, p.resolution.z))

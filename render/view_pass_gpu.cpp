@@ -20,7 +20,8 @@ ViewPassGpu::~ViewPassGpu() {
 }
 
 Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
-                          const LightVolumesGpu& lights, GpuStageTimer* timer) {
+                          const LightVolumesGpu& lights, unsigned gradientTexture,
+                          GpuStageTimer* timer) {
     const shared::GpuViewParams& p = setup.params;
     const int width = p.image.x, height = p.image.y;
     if (timer) timer->begin("view");
@@ -35,6 +36,9 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
     glBindImageTexture(0, outputTexture_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     textures.bind();
     lights.bind();
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_3D, gradientTexture);
+    glActiveTexture(GL_TEXTURE0);
     program_->use();
     const auto local = program_->localSize();
     glDispatchCompute(GLuint((width + local[0] - 1) / local[0]),

@@ -10,6 +10,7 @@
 layout(std430, binding = 0) readonly buffer ViewParamsBlock { GpuViewParams params; };
 layout(binding = 0) uniform sampler3D fieldTex;  // R32F, EK_MAX_MATERIALS slots at most
 layout(binding = 1) uniform sampler3D lightTex;  // RGBA32F, one volume per light
+layout(binding = 2) uniform sampler3D gradientTex;  // RGBA32F: xyz = ∇n, w = n (curved rays)
 
 ivec3 stackedVoxel(int slot, ivec3 voxel) {
     return ivec3(voxel.x, voxel.y, voxel.z + slot * params.resolution.z);
@@ -17,6 +18,7 @@ ivec3 stackedVoxel(int slot, ivec3 voxel) {
 
 vec4 fetchVolume(int slot, ivec3 voxel) {
     if (slot < EK_MAX_MATERIALS) return texelFetch(fieldTex, stackedVoxel(slot, voxel), 0);
+    if (slot == EK_GRADIENT_SLOT) return texelFetch(gradientTex, voxel, 0);
     return texelFetch(lightTex, stackedVoxel(slot - EK_MAX_MATERIALS, voxel), 0);
 }
 
@@ -33,6 +35,7 @@ vec4 filterStacked(sampler3D tex, int slot, vec3 indexPos) {
 
 vec4 filterVolume(int slot, vec3 indexPos) {
     if (slot < EK_MAX_MATERIALS) return filterStacked(fieldTex, slot, indexPos);
+    if (slot == EK_GRADIENT_SLOT) return filterStacked(gradientTex, 0, indexPos);
     return filterStacked(lightTex, slot - EK_MAX_MATERIALS, indexPos);
 }
 #endif

@@ -19,6 +19,9 @@ EK_NAMESPACE_BEGIN
 #define EK_SHADOWS_MARCHED 1  // a ray marched toward the light from every sample (reference)
 #define EK_SHADOWS_SWEPT 2    // lookup in a light volume swept slice by slice (directional)
 
+// fetchVolume slots after the fields (0..) and the light volumes: the ∇n volume (xyz = ∇n, w = n).
+#define EK_GRADIENT_SLOT (EK_MAX_MATERIALS + EK_MAX_LIGHTS)
+
 // One material: optics per unit of its field's value (see core/scene.h).
 struct GpuMaterial {
     vec4 absorption;  // rgb: per scene unit; w: Henyey–Greenstein g
@@ -44,6 +47,7 @@ struct GpuViewParams {
     ivec4 resolution;    // xyz voxels; w: material count
     ivec4 image;         // x, y: pixels; z: light count; w: EK_SHADOWS_*
     vec4 background;     // rgb radiance; w: minimum transmittance before a ray stops
+    ivec4 pipeline;      // x: 1 = curved view rays through the ∇n volume, 0 = straight; yzw: 0
     GpuMaterial materials[EK_MAX_MATERIALS];
     GpuLight lights[EK_MAX_LIGHTS];
 };

@@ -1,4 +1,4 @@
-// The straight-ray viewing pass: emission, absorption and single scattering of every light with
+// The viewing pass: emission, absorption and single scattering of every light with
 // its transmittance (shadowing) taken from the light volume (light_volume.h) or, as reference,
 // marched toward the light from every sample (like vdb_render). Needs optics.h.
 
@@ -8,60 +8,124 @@ float stepWeight(float kappa, float s) {
 }
 
 // Radiance reaching the camera along a ray, and the ray's transmittance through the volume.
+// Adds one step of length s, with the medium's optics taken at its midpoint x (volume index
+// position p) and the ray travelling along unit `dir`. Returns false once the ray is opaque
+// (every channel below the scene's cut-off), with transmittance set to 0.
+bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
+                    EK_INOUT(vec3) transmittance) {
+    vec3 kappa = vec3(0.0f);
+    vec3 source = vec3(0.0f);
+    // Per-material scattering, kept for the phase function of each light below.
+    vec3 sigma[EK_MAX_MATERIALS];
+    bool scatters = false;
+    for (int m = 0; m < params.resolution.w; ++m) {
+        const float field = sampleField(params.materials[m].slot.x, p);
+        sigma[m] = field * vec3(params.materials[m].scattering);
+        kappa += field * vec3(params.materials[m].absorption) + sigma[m];
+        source += field * vec3(params.materials[m].emission);
+        scatters = scatters || sigma[m].x + sigma[m].y + sigma[m].z > 0.0f;
+    }
+    if (scatters) {
+        for (int l = 0; l < params.image.z; ++l) {
+            vec3 toLight;
+            float lightDistance;
+            const vec3 irradiance = lightIrradiance(l, x, toLight, lightDistance);
+            if (irradiance.x + irradiance.y + irradiance.z <= 0.0f) continue;
+            // Light travels along −toLight and scatters toward the camera, along −dir.
+            const float cosTheta = dot(-toLight, -dir);
+            vec3 scattered = vec3(0.0f);
+            for (int m = 0; m < params.resolution.w; ++m)
+                scattered += sigma[m] * phaseHG(params.materials[m].absorption.w, cosTheta);
+            vec3 shadow;
+            if (params.image.w == EK_SHADOWS_MARCHED)
+                shadow = transmittanceToward(x, toLight, lightDistance);
+            else
+                shadow = vec3(sampleVolume(EK_MAX_MATERIALS + l, p));
+            source += scattered * irradiance * shadow;
+        }
+    }
+    radiance += transmittance * source *
+                vec3(stepWeight(kappa.x, s), stepWeight(kappa.y, s), stepWeight(kappa.z, s));
+    transmittance *= exp(-kappa * s);
+    if (max(max(transmittance.x, transmittance.y), transmittance.z) < params.background.w) {
+        transmittance = vec3(0.0f);  // what is left is below the cut-off the scene set
+        return false;
+    }
+    return true;
+}
+
+// One step of the ray equation d/ds(n dx/ds) = ∇n (Sun et al. 2008, eqs. 4-5):
+// x += (Δs/n) v, v += Δs ∇n, with v = n dx/ds and n, ∇n from the gradient volume at x.
+void rayStep(EK_INOUT(vec3) x, EK_INOUT(vec3) v, float ds) {
+    const vec4 g = sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(x));
+    x += (ds / g.w) * v;
+    v += ds * vec3(g);
+}
+
+// Traces a curved ray from `entry` (on or inside the volume) with unit direction `dir`, one
+// rayStep of length h per iteration, until it leaves the volume; the last step is cut at the
+// face. Calls accumulateStep on every segment when `shade`. Returns the exit point; exitDir
+// gets the direction the ray leaves with.
+vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
+                    EK_INOUT(vec3) transmittance, EK_OUT(vec3) exitDir) {
+    const float h = params.volumeMin.w;
+    vec3 x = entry;
+    vec3 v = dir * sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(x)).w;
+    exitDir = dir;
+    // A ray trapped by total internal reflection would circle forever: bound the path at 16
+    // crossings of the volume.
+    const ivec3 res = volumeResolution();
+    const int maxSteps = 16 * (res.x + res.y + res.z);
+    for (int i = 0; i < maxSteps; ++i) {
+        vec3 next = x;
+        vec3 vNext = v;
+        rayStep(next, vNext, h);
+        const vec3 delta = next - x;
+        float s = length(delta);
+        if (!(s > 0.0f)) break;  // a degenerate n; nothing more to trace
+        const vec3 segmentDir = delta / s;
+        const float tExit = intersectVolume(x, segmentDir).y;
+        const bool leaves = tExit < s;
+        if (leaves) {
+            s = max(tExit, 0.0f);
+            next = x + segmentDir * s;
+        }
+        if (shade) {
+            const vec3 mid = 0.5f * (x + next);
+            if (!accumulateStep(mid, worldToVolumeIndex(mid), segmentDir, s, radiance,
+                                transmittance))
+                shade = false;  // opaque: keep tracing only for the exit point
+        }
+        x = next;
+        v = vNext;
+        exitDir = normalize(v);
+        if (leaves) break;
+    }
+    return x;
+}
+
+// Radiance reaching the camera along a ray, and the ray's transmittance through the volume.
+// Straight rays integrate exactly-clipped steps along t; curved rays (params.pipeline.x) follow
+// the ray equation inside the volume, where n varies, and leave along their bent direction.
 vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
     transmittance = vec3(1.0f);
     vec3 radiance = vec3(0.0f);
     const vec2 span = intersectVolume(origin, dir);
+    if (!(span.x < span.y)) return vec3(params.background);
+    if (params.pipeline.x != 0) {
+        vec3 exitDir;
+        traceCurvedRay(origin + dir * span.x, dir, true, radiance, transmittance, exitDir);
+        // The background is a constant colour for now; exitDir will look up an environment.
+        return radiance + transmittance * vec3(params.background);
+    }
     const float h = params.volumeMin.w;
-    const int steps = span.x < span.y ? min(int(ceil((span.y - span.x) / h)), EK_MAX_STEPS) : 0;
+    const int steps = min(int(ceil((span.y - span.x) / h)), EK_MAX_STEPS);
     for (int i = 0; i < steps; ++i) {
         const float t0 = span.x + float(i) * h;
         const float t1 = min(t0 + h, span.y);
-        const float s = t1 - t0;
         const vec3 x = origin + dir * (0.5f * (t0 + t1));
-        const vec3 p = worldToVolumeIndex(x);
-
-        vec3 kappa = vec3(0.0f);
-        vec3 source = vec3(0.0f);
-        // Per-material scattering, kept for the phase function of each light below.
-        vec3 sigma[EK_MAX_MATERIALS];
-        float field[EK_MAX_MATERIALS];
-        bool scatters = false;
-        for (int m = 0; m < params.resolution.w; ++m) {
-            field[m] = sampleField(params.materials[m].slot.x, p);
-            sigma[m] = field[m] * vec3(params.materials[m].scattering);
-            kappa += field[m] * vec3(params.materials[m].absorption) + sigma[m];
-            source += field[m] * vec3(params.materials[m].emission);
-            scatters = scatters || field[m] * (params.materials[m].scattering.x +
-                                               params.materials[m].scattering.y +
-                                               params.materials[m].scattering.z) > 0.0f;
-        }
-        if (scatters) {
-            for (int l = 0; l < params.image.z; ++l) {
-                vec3 toLight;
-                float lightDistance;
-                const vec3 irradiance = lightIrradiance(l, x, toLight, lightDistance);
-                if (irradiance.x + irradiance.y + irradiance.z <= 0.0f) continue;
-                // Light travels along −toLight and scatters toward the camera, along −dir.
-                const float cosTheta = dot(-toLight, -dir);
-                vec3 scattered = vec3(0.0f);
-                for (int m = 0; m < params.resolution.w; ++m)
-                    scattered += sigma[m] * phaseHG(params.materials[m].absorption.w, cosTheta);
-                vec3 shadow;
-                if (params.image.w == EK_SHADOWS_MARCHED)
-                    shadow = transmittanceToward(x, toLight, lightDistance);
-                else
-                    shadow = vec3(sampleVolume(EK_MAX_MATERIALS + l, p));
-                source += scattered * irradiance * shadow;
-            }
-        }
-        radiance += transmittance * source *
-                    vec3(stepWeight(kappa.x, s), stepWeight(kappa.y, s), stepWeight(kappa.z, s));
-        transmittance *= exp(-kappa * s);
-        if (max(max(transmittance.x, transmittance.y), transmittance.z) < params.background.w) {
-            transmittance = vec3(0.0f);  // what is left is below the cut-off the scene set
+        if (!accumulateStep(x, worldToVolumeIndex(x), dir, t1 - t0, radiance, transmittance))
             break;
-        }
     }
     return radiance + transmittance * vec3(params.background);
 }

@@ -104,7 +104,7 @@ Layout viewParamsLayout() {
         EK_MEMBER(GpuViewParams, cameraUp),     EK_MEMBER(GpuViewParams, cameraForward),
         EK_MEMBER(GpuViewParams, volumeMin),    EK_MEMBER(GpuViewParams, volumeMax),
         EK_MEMBER(GpuViewParams, resolution),   EK_MEMBER(GpuViewParams, image),
-        EK_MEMBER(GpuViewParams, background)};
+        EK_MEMBER(GpuViewParams, background),   EK_MEMBER(GpuViewParams, pipeline)};
     addArray(fields, "materials", offsetof(GpuViewParams, materials), sizeof(GpuMaterial),
              EK_MAX_MATERIALS, materialLayout());
     addArray(fields, "lights", offsetof(GpuViewParams, lights), sizeof(GpuLight), EK_MAX_LIGHTS,
