@@ -1,0 +1,75 @@
+#pragma once
+// Photon tracing, steps 4 and 5 of Sun et al. 2008 (docs: shaders/shared/photons.h): the CPU twin,
+// parallel over photons with TBB; the GPU port runs the same shared functions.
+//
+// Radiance volume (x fastest, like DenseGrid): rgb = Σ flux·length per voxel, in power × scene
+// units (divide by the voxel's volume for the fluence rate); direction volume: xyz = Σ luminance
+// of that flux·length × the segment's unit direction.
+//
+// Determinism: deposits are summed as 64-bit integers, so the order of additions does not matter
+// and any thread count gives the same bits. A deposit q becomes llround(q · scale) with, per
+// channel, scale = 2^40 / (Φ_c · h): Φ_c the power emitted in that channel this frame (all
+// lights), h the smallest voxel edge. One quantum is Φ·h·2^-40 (~1e-12 of a photon budget
+// crossing one voxel), and a voxel overflows only if more than 2^23 voxel lengths' worth of the
+// whole emitted power pass through it. The direction volume uses the same rule with the emitted
+// power's luminance. Totals (escaped, extinguished, dropped) are integer sums too, per photon,
+// at 2^40 / Φ_c.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/dense_grid.h"
+#include "render/refraction_volume.h"
+#include "render/view_params.h"
+
+EK_NAMESPACE_BEGIN
+#define EK_PHOTON_TYPES_ONLY
+#include "shaders/shared/photons.h"
+#undef EK_PHOTON_TYPES_ONLY
+EK_NAMESPACE_END
+
+namespace eikon {
+
+struct PhotonSettings {
+    int photonsPerSide = 128;     // N: N×N photons per light over the box's light-space rectangle
+    float minStepVoxels = 1.0f;   // Δs_min, in voxels of the smallest edge
+    float fluxThreshold = 1e-4f;  // drop a photon below this fraction of its initial flux
+    int maxSteps = 0;             // per photon; 0: 16 crossings of the volume at Δs_min
+    uint32_t seed = 0;
+    int frame = 0;
+};
+
+// Per colour channel, in power (the light's irradiance × area).
+struct PhotonTotals {
+    glm::dvec3 emitted{0.0};       // Σ initial flux of the photons that entered the box
+    glm::dvec3 escaped{0.0};       // flux carried out through the box's faces
+    glm::dvec3 extinguished{0.0};  // lost to e^(−κΔ): absorbed or scattered out
+    glm::dvec3 dropped{0.0};       // left in photons removed below the threshold or cut
+};
+
+struct PhotonResultCpu {
+    glm::ivec3 resolution{0};
+    std::vector<glm::vec4> radiance;   // rgb: Σ flux·length; w: 0
+    std::vector<glm::vec4> direction;  // xyz: Σ luminance(flux·length) × unit direction; w: 0
+    PhotonTotals totals;
+    glm::dvec4 fixedPointScale{0.0};  // rgb: radiance channels; w: direction (see above)
+    int64_t steps = 0;                // photon steps taken, all photons
+    int64_t photonsTraced = 0;        // photons that entered the box
+    int64_t photonsCut = 0;           // still active at maxSteps (their flux counts as dropped)
+    int skippedLights = 0;            // point and spot lights: not traced yet
+    // Every photon's final state, light after light, index order: for escaped photons the exit
+    // point and the direction v they leave with (shared::GpuPhoton, EK_PHOTON_* in position.w).
+    std::vector<shared::GpuPhoton> photons;
+};
+
+// Traces N² photons from every directional light of setup through the media: slotGrids are the
+// field volumes (as for computeIndexGradientCpu), gradient and octree the refraction volumes.
+PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
+                                     const std::vector<const DenseGrid*>& slotGrids,
+                                     const RefractionVolumeCpu& gradient,
+                                     const RefractionVolumeCpu& octree,
+                                     const PhotonSettings& settings = {});
+
+}  // namespace eikon

@@ -1,0 +1,183 @@
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <memory>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "render/photon_tracing.h"
+#include "render/volume_kernels_cpu.h"
+
+EK_NAMESPACE_BEGIN
+
+// What the photon shaders will see: the field and ∇n volumes, the octree volume, and the
+// radiance volume as integer accumulators (kDepositChannels per voxel: r, g, b, then the
+// weighted direction x, y, z).
+struct PhotonKernelCpu : VolumeAccessCpu {
+    static constexpr int kDepositChannels = 6;
+    const vec4* octree = nullptr;
+    std::atomic<int64_t>* deposits = nullptr;
+    dvec4 scale = dvec4(0.0);  // rgb: flux·length channels; w: direction
+
+    vec4 fetchOctree(ivec3 v) const { return octree[voxelIndex(v)]; }
+
+    static int64_t toFixed(double value, double scale) {
+        // Clamped so that no input can make the conversion undefined; at the documented scale a
+        // single deposit never comes near this.
+        const double limit = 4.0e18;
+        return int64_t(std::llround(std::clamp(value * scale, -limit, limit)));
+    }
+
+    void depositVoxel(ivec3 v, vec3 fluxLength, vec3 weightedDir) const {
+        std::atomic<int64_t>* cell = deposits + voxelIndex(v) * kDepositChannels;
+        // Integer addition commutes exactly: the sum is the same in any order, on any thread.
+        for (int c = 0; c < 3; ++c) {
+            cell[c].fetch_add(toFixed(fluxLength[c], scale[c]), std::memory_order_relaxed);
+            cell[3 + c].fetch_add(toFixed(weightedDir[c], scale.w), std::memory_order_relaxed);
+        }
+    }
+
+    // clang-format off
+#include "shaders/shared/photons.h"
+    // clang-format on
+};
+
+EK_NAMESPACE_END
+
+namespace eikon {
+
+namespace {
+
+constexpr double kFixedPointRange = 1099511627776.0;  // 2^40, see render/photon_tracing.h
+
+double luminance(glm::dvec3 c) {
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
+
+// Order-independent totals: per-photon values in fixed point, summed as integers.
+struct FixedTotals {
+    std::atomic<int64_t> escaped[3] = {};
+    std::atomic<int64_t> extinguished[3] = {};
+    std::atomic<int64_t> dropped[3] = {};
+    std::atomic<int64_t> steps{0};
+    std::atomic<int64_t> cut{0};
+};
+
+}  // namespace
+
+PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
+                                     const std::vector<const DenseGrid*>& slotGrids,
+                                     const RefractionVolumeCpu& gradient,
+                                     const RefractionVolumeCpu& octree,
+                                     const PhotonSettings& settings) {
+    shared::PhotonKernelCpu kernel{{setup.params}};
+    for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
+    kernel.gradient = gradient.data();
+    kernel.octree = octree.data();
+
+    PhotonResultCpu result;
+    const glm::ivec3 res = glm::ivec3(setup.params.resolution);
+    result.resolution = res;
+    const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
+    const int side = std::max(settings.photonsPerSide, 1);
+    const size_t perLight = size_t(side) * size_t(side);
+    const float minStep = octreeStepInScene(setup, settings.minStepVoxels);
+    const int maxSteps = settings.maxSteps > 0
+                             ? settings.maxSteps
+                             : int(std::ceil(16.0f * float(res.x + res.y + res.z) /
+                                             std::max(settings.minStepVoxels, 1e-3f)));
+
+    // Step 4: generate every light's photons; the emitted power, summed in index order, sets the
+    // fixed-point scales before anything is deposited.
+    std::vector<int> traced;  // lights generated, in order
+    for (int l = 0; l < setup.params.image.z; ++l) {
+        if (int(setup.params.lights[l].position.w) == EK_LIGHT_DIRECTIONAL)
+            traced.push_back(l);
+        else
+            ++result.skippedLights;
+    }
+    result.photons.resize(traced.size() * perLight);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, result.photons.size(), 256),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t i = r.begin(); i != r.end(); ++i)
+                              result.photons[i] = kernel.generateDirectionalPhoton(
+                                  traced[i / perLight], side, int(i % perLight),
+                                  glm::uint(settings.seed), glm::uint(settings.frame),
+                                  settings.fluxThreshold);
+                      });
+    for (const shared::GpuPhoton& p : result.photons) {
+        if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
+        result.totals.emitted += glm::dvec3(glm::vec3(p.flux));
+        ++result.photonsTraced;
+    }
+
+    const glm::vec3 h = kernel.volumeVoxelSize();
+    const double smallestVoxel = double(std::min({h.x, h.y, h.z}));
+    const glm::dvec3& emitted = result.totals.emitted;
+    auto scaleFor = [](double power, double length) {
+        return power > 0.0 ? kFixedPointRange / (power * length) : 0.0;
+    };
+    kernel.scale =
+        glm::dvec4(scaleFor(emitted.x, smallestVoxel), scaleFor(emitted.y, smallestVoxel),
+                   scaleFor(emitted.z, smallestVoxel), scaleFor(luminance(emitted), smallestVoxel));
+    result.fixedPointScale = kernel.scale;
+    const glm::dvec3 totalScale(scaleFor(emitted.x, 1.0), scaleFor(emitted.y, 1.0),
+                                scaleFor(emitted.z, 1.0));
+
+    // std::atomic's default constructor leaves the value unset before C++20: zero explicitly.
+    const size_t depositCount = voxels * size_t(shared::PhotonKernelCpu::kDepositChannels);
+    std::unique_ptr<std::atomic<int64_t>[]> deposits(new std::atomic<int64_t>[depositCount]);
+    for (size_t i = 0; i < depositCount; ++i) deposits[i].store(0, std::memory_order_relaxed);
+    kernel.deposits = deposits.get();
+
+    // Step 5: each photon marched to its end by one task; the GPU may instead take one step of
+    // all photons per dispatch (photonStep), which deposits the same segments.
+    FixedTotals totals;
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, result.photons.size(), 16),
+        [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t i = r.begin(); i != r.end(); ++i) {
+                shared::GpuPhoton& p = result.photons[i];
+                if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
+                glm::vec3 extinguished(0.0f);
+                kernel.tracePhoton(p, minStep, maxSteps, extinguished);
+                const int state = int(p.position.w);
+                const glm::vec3 left(p.flux);
+                for (int c = 0; c < 3; ++c) {
+                    totals.extinguished[c].fetch_add(
+                        shared::PhotonKernelCpu::toFixed(extinguished[c], totalScale[c]),
+                        std::memory_order_relaxed);
+                    std::atomic<int64_t>& bin =
+                        state == EK_PHOTON_ESCAPED ? totals.escaped[c] : totals.dropped[c];
+                    bin.fetch_add(shared::PhotonKernelCpu::toFixed(left[c], totalScale[c]),
+                                  std::memory_order_relaxed);
+                }
+                totals.steps.fetch_add(int64_t(p.direction.w), std::memory_order_relaxed);
+                if (state == EK_PHOTON_CUT) totals.cut.fetch_add(1, std::memory_order_relaxed);
+            }
+        });
+
+    auto fromFixed = [](int64_t q, double scale) { return scale > 0.0 ? double(q) / scale : 0.0; };
+    for (int c = 0; c < 3; ++c) {
+        result.totals.escaped[c] = fromFixed(totals.escaped[c].load(), totalScale[c]);
+        result.totals.extinguished[c] = fromFixed(totals.extinguished[c].load(), totalScale[c]);
+        result.totals.dropped[c] = fromFixed(totals.dropped[c].load(), totalScale[c]);
+    }
+    result.steps = totals.steps.load();
+    result.photonsCut = totals.cut.load();
+
+    result.radiance.resize(voxels);
+    result.direction.resize(voxels);
+    const glm::dvec4 scale = kernel.scale;
+    for (size_t i = 0; i < voxels; ++i) {
+        const std::atomic<int64_t>* cell = &deposits[i * shared::PhotonKernelCpu::kDepositChannels];
+        for (int c = 0; c < 3; ++c) {
+            result.radiance[i][c] = float(fromFixed(cell[c].load(), scale[c]));
+            result.direction[i][c] = float(fromFixed(cell[3 + c].load(), scale.w));
+        }
+    }
+    return result;
+}
+
+}  // namespace eikon
