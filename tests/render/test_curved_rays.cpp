@@ -14,13 +14,11 @@
 #include "render/refraction_volume.h"
 #include "render/view_params.h"
 #include "render/volume_kernels_cpu.h"
+#include "support/linear_n2_medium.h"
 
 using namespace eikon;
 
 namespace {
-
-constexpr float kN0 = 1.2f;     // n at y = -1
-constexpr float kAlpha = 0.3f;  // d(n²)/dy
 
 // A medium whose n² = kN0² + kAlpha (y + 1), on [-1, 1]^3 at `res` voxels, stepped at
 // `stepVoxels`: n = 1 + f·(ior − 1) with ior 2, so the field is f = n − 1.
@@ -46,7 +44,7 @@ struct GradientScene {
                 for (int i = 0; i < res; ++i) {
                     const float y = field.volume.voxelCenter(i, j, k).y;
                     field.values[field.index(i, j, k)] =
-                        std::sqrt(kN0 * kN0 + kAlpha * (y + 1.0f)) - 1.0f;
+                        eikon::test::linearN2Field(glm::vec3(0.0f, y, 0.0f));
                 }
         setup = makeViewSetup(scene, field.volume,
                               makeCameraFrame(scene.camera, field.volume.bounds, 4, 4));
@@ -63,29 +61,13 @@ struct GradientScene {
     }
 };
 
-// The closed form: with dτ = ds/n, x(τ) = x0 + p0 τ + (∇n²/4) τ², p0 = n(x0)·dir.
 glm::vec3 exact(glm::vec3 x0, glm::vec3 dir) {
-    const float n0 = std::sqrt(kN0 * kN0 + kAlpha * (x0.y + 1.0f));
-    const glm::vec3 p0 = n0 * dir;
-    const glm::vec3 a(0.0f, kAlpha / 4.0f, 0.0f);
-    // March τ finely to the first exit, then bisect.
-    auto at = [&](double t) { return x0 + p0 * float(t) + a * float(t * t); };
-    auto inside = [](glm::vec3 x) {
-        return std::abs(x.x) <= 1.0f && std::abs(x.y) <= 1.0f && std::abs(x.z) <= 1.0f;
-    };
-    double lo = 0.0, hi = 1e-3;
-    while (inside(at(hi))) lo = hi, hi += 1e-3;
-    for (int i = 0; i < 60; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (inside(at(mid)) ? lo : hi) = mid;
-    }
-    return at(lo);
+    return glm::vec3(eikon::test::linearN2Exit(glm::dvec3(x0), glm::dvec3(dir)));
 }
 
 }  // namespace
 
-TEST_CASE("curved view rays follow the closed-form parabola of a linear n^2 gradient",
-          "[curved]") {
+TEST_CASE("curved view rays follow the closed-form parabola of a linear n^2 gradient", "[curved]") {
     const int res = 32;
     const float voxel = 2.0f / res;
     const glm::vec3 entry(0.05f, -0.3f, 1.0f);

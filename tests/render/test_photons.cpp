@@ -13,9 +13,10 @@
 #include "core/camera.h"
 #include "render/gl_context.h"
 #include "render/photon_tracing.h"
-#include "render/shader_program.h"
 #include "render/refraction_volume.h"
+#include "render/shader_program.h"
 #include "render/volume_kernels_cpu.h"
+#include "support/linear_n2_medium.h"
 
 EK_NAMESPACE_BEGIN
 // The shared photon functions with nothing to deposit into: for the photons' starting states.
@@ -92,31 +93,12 @@ double maxRelativeImbalance(const PhotonTotals& t) {
     return worst;
 }
 
-// The n² = kN0² + kAlpha (y + 1) medium of tests/render/test_curved_rays.cpp.
-constexpr float kN0 = 1.2f;
-constexpr float kAlpha = 0.3f;
-
 float gradientField(glm::vec3 x) {
-    return std::sqrt(kN0 * kN0 + kAlpha * (x.y + 1.0f)) - 1.0f;  // n = 1 + f with ior 2
+    return eikon::test::linearN2Field(x);
 }
 
-// With dτ = ds/n, x(τ) = x0 + p0 τ + (∇n²/4) τ², p0 = n(x0)·dir; marched to the first exit, then
-// bisected.
 glm::dvec3 exactExit(glm::dvec3 x0, glm::dvec3 dir) {
-    const double n0 = std::sqrt(kN0 * kN0 + kAlpha * (x0.y + 1.0));
-    const glm::dvec3 p0 = n0 * dir;
-    const glm::dvec3 a(0.0, kAlpha / 4.0, 0.0);
-    auto at = [&](double t) { return x0 + p0 * t + a * (t * t); };
-    auto inside = [](glm::dvec3 x) {
-        return std::abs(x.x) <= 1.0 && std::abs(x.y) <= 1.0 && std::abs(x.z) <= 1.0;
-    };
-    double lo = 0.0, hi = 1e-3;
-    while (inside(at(hi))) lo = hi, hi += 1e-3;
-    for (int i = 0; i < 60; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (inside(at(mid)) ? lo : hi) = mid;
-    }
-    return at(lo);
+    return eikon::test::linearN2Exit(x0, dir);
 }
 
 bool allFinite(const std::vector<glm::vec4>& v) {
