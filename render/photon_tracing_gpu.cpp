@@ -1,0 +1,227 @@
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "core/error.h"
+#include "render/gpu_timer.h"
+#include "render/photon_tracing_gpu.h"
+#include "render/shader_program.h"
+#include "render/volume_kernels_cpu.h"
+#include "render/volume_textures.h"
+
+namespace eikon {
+
+namespace {
+
+// Bindings shaders/photon_trace.comp declares. Texture unit 3 and SSBO bindings 4-6 are used by
+// no other pass, so nothing needs rebinding around them.
+constexpr GLuint kOctreeUnit = 3;
+constexpr GLuint kGradientUnit = 2;  // volume_bindings.glsl's gradientTex
+constexpr GLuint kPhotonBinding = 4;
+constexpr GLuint kDepositBinding = 5;
+constexpr GLuint kTotalsBinding = 6;
+constexpr int kLocalSize = 64;
+constexpr int kDepositChannels = 6;  // r, g, b, weighted direction x, y, z
+constexpr int kTotalsCount = 11;     // escaped rgb, extinguished rgb, dropped rgb, steps, cut
+
+constexpr double kFixedPointRange = 1099511627776.0;  // 2^40, see render/photon_tracing.h
+
+double luminance(glm::dvec3 c) {
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
+
+double scaleFor(double power, double length) {
+    return power > 0.0 ? kFixedPointRange / (power * length) : 0.0;
+}
+
+double fromFixed(int64_t q, double scale) {
+    return scale > 0.0 ? double(q) / scale : 0.0;
+}
+
+// An int64 the shader kept as two's complement (low, high) uint words.
+int64_t joinWords(const GLuint* words) {
+    return int64_t(uint64_t(words[0]) | (uint64_t(words[1]) << 32));
+}
+
+void resizeBuffer(GLuint& buffer, size_t bytes) {
+    if (buffer) glDeleteBuffers(1, &buffer);
+    glGenBuffers(1, &buffer);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr,
+                 GL_DYNAMIC_COPY);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+void clearBuffer(GLuint buffer) {
+    const GLuint zero = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+template <typename T>
+std::vector<T> readBuffer(GLuint buffer, size_t count) {
+    std::vector<T> out(count);
+    if (count == 0) return out;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(count * sizeof(T)), out.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    return out;
+}
+
+}  // namespace
+
+PhotonTracerGpu::PhotonTracerGpu(bool exactMath) {
+    std::vector<std::string> defines;
+    if (exactMath) defines.push_back("EK_EXACT_MATH");
+    std::vector<std::string> generateDefines = defines;
+    generateDefines.push_back("EK_PHOTON_GENERATE");
+    generate_ = std::make_unique<ShaderProgram>(
+        ShaderProgram::compute("photon_trace.comp", generateDefines));
+    trace_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("photon_trace.comp", defines));
+    resizeBuffer(totals_, kTotalsCount * 2 * sizeof(GLuint));
+}
+
+PhotonTracerGpu::~PhotonTracerGpu() {
+    for (GLuint* b : {&photons_, &deposits_, &totals_})
+        if (*b) glDeleteBuffers(1, b);
+}
+
+void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
+                            const RefractionVolumesGpu& refraction, const PhotonSettings& settings,
+                            GpuStageTimer* timer) {
+    // The same derived settings as traceLightPhotonsCpu.
+    PhotonResultCpu host;
+    const glm::ivec3 res = glm::ivec3(setup.params.resolution);
+    host.resolution = res;
+    const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
+    const int side = std::max(settings.photonsPerSide, 1);
+    const size_t perLight = size_t(side) * size_t(side);
+    const float minStep = octreeStepInScene(setup, settings.minStepVoxels);
+    const int maxSteps = settings.maxSteps > 0
+                             ? settings.maxSteps
+                             : int(std::ceil(16.0f * float(res.x + res.y + res.z) /
+                                             std::max(settings.minStepVoxels, 1e-3f)));
+    std::vector<int> traced;
+    for (int l = 0; l < setup.params.image.z; ++l) {
+        if (int(setup.params.lights[l].position.w) == EK_LIGHT_DIRECTIONAL)
+            traced.push_back(l);
+        else
+            ++host.skippedLights;
+    }
+    const size_t photonCount = traced.size() * perLight;
+    if (photonCount > photonCapacity_ || !photons_) {
+        resizeBuffer(photons_, photonCount * sizeof(shared::GpuPhoton));
+        photonCapacity_ = photonCount;
+    }
+    if (voxels > voxelCapacity_ || !deposits_) {
+        resizeBuffer(deposits_, voxels * kDepositChannels * 2 * sizeof(GLuint));
+        voxelCapacity_ = voxels;
+    }
+    if (glGetError() != GL_NO_ERROR)
+        throw Error("photon tracing", "the driver refused the buffers for " +
+                                          std::to_string(photonCount) + " photons and " +
+                                          std::to_string(voxels) + " voxels");
+
+    if (timer) timer->begin("photons");
+    fields.bind();
+    glActiveTexture(GL_TEXTURE0 + kGradientUnit);
+    glBindTexture(GL_TEXTURE_3D, refraction.gradientTexture());
+    glActiveTexture(GL_TEXTURE0 + kOctreeUnit);
+    glBindTexture(GL_TEXTURE_3D, refraction.octreeTexture());
+    glActiveTexture(GL_TEXTURE0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhotonBinding, photons_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepositBinding, deposits_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTotalsBinding, totals_);
+    const GLuint groups = GLuint((perLight + kLocalSize - 1) / kLocalSize);
+
+    // Step 4: generate every light's photons.
+    generate_->use();
+    generate_->setInt("photonsPerSide", side);
+    generate_->setInt("photonCount", int(perLight));
+    generate_->setUint("seed", settings.seed);
+    generate_->setUint("frame", glm::uint(settings.frame));
+    generate_->setFloat("fluxThreshold", settings.fluxThreshold);
+    for (size_t t = 0; t < traced.size(); ++t) {
+        generate_->setInt("lightIndex", traced[t]);
+        generate_->setInt("photonOffset", int(t * perLight));
+        glDispatchCompute(groups, 1, 1);
+    }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+
+    // The emitted power sets the scales before anything is deposited; it is summed here in the
+    // CPU twin's order (index order, in double), which a GPU reduction would not reproduce.
+    const std::vector<shared::GpuPhoton> started =
+        readBuffer<shared::GpuPhoton>(photons_, photonCount);
+    for (const shared::GpuPhoton& p : started) {
+        if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
+        host.totals.emitted += glm::dvec3(glm::vec3(p.flux));
+        ++host.photonsTraced;
+    }
+    shared::VolumeAccessCpu volume{setup.params};  // for the shared volumeVoxelSize()
+    const glm::vec3 h = volume.volumeVoxelSize();
+    const double smallestVoxel = double(std::min({h.x, h.y, h.z}));
+    const glm::dvec3& emitted = host.totals.emitted;
+    host.fixedPointScale =
+        glm::dvec4(scaleFor(emitted.x, smallestVoxel), scaleFor(emitted.y, smallestVoxel),
+                   scaleFor(emitted.z, smallestVoxel), scaleFor(luminance(emitted), smallestVoxel));
+    const glm::dvec3 totalScale(scaleFor(emitted.x, 1.0), scaleFor(emitted.y, 1.0),
+                                scaleFor(emitted.z, 1.0));
+
+    // Step 5: every photon marched to its end by one invocation.
+    clearBuffer(deposits_);
+    clearBuffer(totals_);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    trace_->use();
+    trace_->setInt("photonCount", int(perLight));
+    trace_->setFloat("minStep", minStep);
+    trace_->setInt("maxSteps", maxSteps);
+    const glm::dvec4& s = host.fixedPointScale;
+    glUniform4d(trace_->uniformLocation("depositScale"), s.x, s.y, s.z, s.w);
+    glUniform3d(trace_->uniformLocation("totalScale"), totalScale.x, totalScale.y, totalScale.z);
+    for (size_t t = 0; t < traced.size(); ++t) {
+        trace_->setInt("photonOffset", int(t * perLight));
+        glDispatchCompute(groups, 1, 1);
+    }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    if (timer) timer->end();
+
+    host.photons.resize(photonCount);  // filled by download()
+    host_ = std::move(host);
+}
+
+PhotonResultCpu PhotonTracerGpu::download() const {
+    PhotonResultCpu r = host_;
+    const glm::ivec3 res = r.resolution;
+    const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
+    r.photons = readBuffer<shared::GpuPhoton>(photons_, r.photons.size());
+    const std::vector<GLuint> totals = readBuffer<GLuint>(totals_, kTotalsCount * 2);
+    const glm::dvec4& scale = r.fixedPointScale;
+    const glm::dvec3 totalScale(scaleFor(r.totals.emitted.x, 1.0),
+                                scaleFor(r.totals.emitted.y, 1.0),
+                                scaleFor(r.totals.emitted.z, 1.0));
+    for (int c = 0; c < 3; ++c) {
+        r.totals.escaped[c] = fromFixed(joinWords(&totals[2 * c]), totalScale[c]);
+        r.totals.extinguished[c] = fromFixed(joinWords(&totals[6 + 2 * c]), totalScale[c]);
+        r.totals.dropped[c] = fromFixed(joinWords(&totals[12 + 2 * c]), totalScale[c]);
+    }
+    r.steps = joinWords(&totals[18]);
+    r.photonsCut = joinWords(&totals[20]);
+
+    const std::vector<GLuint> words = readBuffer<GLuint>(deposits_, voxels * kDepositChannels * 2);
+    r.radiance.assign(voxels, glm::vec4(0.0f));
+    r.direction.assign(voxels, glm::vec4(0.0f));
+    for (size_t i = 0; i < voxels; ++i) {
+        const GLuint* cell = &words[i * kDepositChannels * 2];
+        for (int c = 0; c < 3; ++c) {
+            r.radiance[i][c] = float(fromFixed(joinWords(cell + 2 * c), scale[c]));
+            r.direction[i][c] = float(fromFixed(joinWords(cell + 6 + 2 * c), scale.w));
+        }
+    }
+    return r;
+}
+
+}  // namespace eikon

@@ -1,0 +1,48 @@
+#pragma once
+// Photon tracing on the GPU (shaders/photon_trace.comp): the port of render/photon_tracing.h's
+// CPU twin, running the same shared functions and the same fixed-point sums, so that download()
+// returns the CPU twin's PhotonResultCpu for the same inputs.
+#include <memory>
+
+#include "render/photon_tracing.h"
+
+namespace eikon {
+
+class GpuStageTimer;
+class ShaderProgram;
+class VolumeTextures;
+
+class PhotonTracerGpu {
+public:
+    // Needs a current context. exactMath: the CPU twin's rounding for dot, length, normalize, mix
+    // and exp (bit-identical results on llvmpipe; double-precision exp, slow on most hardware
+    // GPUs, which should pass false and compare with the twin within tolerances).
+    explicit PhotonTracerGpu(bool exactMath = true);
+    ~PhotonTracerGpu();
+    PhotonTracerGpu(const PhotonTracerGpu&) = delete;
+    PhotonTracerGpu& operator=(const PhotonTracerGpu&) = delete;
+
+    // Generates and traces N² photons from every directional light of setup. fields are the
+    // field volumes (already uploaded), refraction the ∇n and octree volumes already computed
+    // from them, and the params SSBO is already bound at binding 0. Reads the generated photons
+    // back once (the emitted power sets the fixed-point scales before anything is deposited, as
+    // in the CPU twin); the results stay on the GPU until download(). Timer stage: "photons".
+    void trace(const ViewSetup& setup, VolumeTextures& fields,
+               const RefractionVolumesGpu& refraction, const PhotonSettings& settings = {},
+               GpuStageTimer* timer = nullptr);
+
+    // The last trace's results, in the CPU twin's structure and units.
+    PhotonResultCpu download() const;
+
+private:
+    std::unique_ptr<ShaderProgram> generate_;
+    std::unique_ptr<ShaderProgram> trace_;
+    unsigned photons_ = 0;   // SSBO: shared::GpuPhoton per photon
+    unsigned deposits_ = 0;  // SSBO: 6 int64 (low, high uint words) per voxel
+    unsigned totals_ = 0;    // SSBO: 11 int64, see shaders/photon_trace.comp
+    size_t photonCapacity_ = 0;
+    size_t voxelCapacity_ = 0;
+    PhotonResultCpu host_;  // what the trace knows on the host: scales, emitted power, counts
+};
+
+}  // namespace eikon

@@ -1,0 +1,228 @@
+// The GPU photon pass (shaders/photon_trace.comp) against its CPU twin on the scenes of
+// test_photons.cpp: the radiance and direction volumes, the totals and every photon's final
+// state, and two GPU runs against each other.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+
+#include "core/camera.h"
+#include "render/gl_context.h"
+#include "render/params_buffer.h"
+#include "render/photon_tracing_gpu.h"
+#include "render/refraction_volume.h"
+#include "render/volume_textures.h"
+#include "support/linear_n2_medium.h"
+
+using namespace eikon;
+
+namespace {
+
+// One material on one field over [-1, 1]^3, lit by one directional light (as in
+// test_photons.cpp), with its refraction volumes on both sides.
+struct GpuPhotonScene {
+    Scene scene;
+    DenseGrid field;
+    ViewSetup setup;
+    RefractionVolumeCpu gradient;
+    RefractionVolumeCpu octree;
+
+    GpuPhotonScene(int res, float ior, glm::vec3 absorption, glm::vec3 lightDir,
+                   const std::function<float(glm::vec3)>& f,
+                   glm::vec3 lightColor = glm::vec3(1.0f)) {
+        MaterialSpec m;
+        m.name = "medium";
+        m.ior = ior;
+        m.absorption = absorption;
+        scene.materials.push_back(m);
+        LightSpec light;
+        light.type = LightType::Directional;
+        light.direction = lightDir;
+        light.color = lightColor;
+        scene.lights.push_back(light);
+        scene.render.width = scene.render.height = 4;
+        field.field = "density";
+        field.volume = {{glm::vec3(-1.0f), glm::vec3(1.0f)}, glm::ivec3(res)};
+        field.values.resize(field.volume.voxelCount());
+        for (int k = 0; k < res; ++k)
+            for (int j = 0; j < res; ++j)
+                for (int i = 0; i < res; ++i)
+                    field.values[field.index(i, j, k)] = f(field.volume.voxelCenter(i, j, k));
+        setup = makeViewSetup(scene, field.volume,
+                              makeCameraFrame(scene.camera, field.volume.bounds, 4, 4));
+        gradient = computeIndexGradientCpu(setup, {&field});
+        octree = computeOctreeCpu(setup, gradient);
+    }
+
+    PhotonResultCpu traceCpu(const PhotonSettings& s) const {
+        return traceLightPhotonsCpu(setup, {&field}, gradient, octree, s);
+    }
+};
+
+// Runs the GPU pass; also checks that the GPU's own refraction volumes equal the CPU twin's, which
+// every comparison below relies on.
+struct GpuRun {
+    explicit GpuRun(bool exactMath = true) : tracer(exactMath) {}
+
+    VolumeTextures textures;
+    ParamsBuffer params;
+    RefractionVolumesGpu refraction;
+    PhotonTracerGpu tracer;
+
+    PhotonResultCpu trace(const GpuPhotonScene& s, const PhotonSettings& settings) {
+        textures.update({&s.field});
+        params.upload(s.setup.params);
+        refraction.compute(s.setup, textures);
+        REQUIRE(refraction.downloadGradient() == s.gradient);
+        REQUIRE(refraction.downloadOctree() == s.octree);
+        tracer.trace(s.setup, textures, refraction, settings);
+        return tracer.download();
+    }
+};
+
+bool sameBits(const void* a, const void* b, size_t bytes) {
+    return std::memcmp(a, b, bytes) == 0;
+}
+
+template <typename T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && sameBits(a.data(), b.data(), a.size() * sizeof(T));
+}
+
+bool finite(const glm::vec4& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+// Everything the GPU result must share with the CPU twin's, bit for bit.
+void requireIdentical(const PhotonResultCpu& gpu, const PhotonResultCpu& cpu) {
+    REQUIRE(gpu.photons.size() == cpu.photons.size());
+    CHECK(gpu.photonsTraced == cpu.photonsTraced);
+    CHECK(gpu.photonsTraced > 0);
+    CHECK(gpu.fixedPointScale == cpu.fixedPointScale);
+    CHECK(gpu.totals.emitted == cpu.totals.emitted);
+    CHECK(gpu.totals.escaped == cpu.totals.escaped);
+    CHECK(gpu.totals.extinguished == cpu.totals.extinguished);
+    CHECK(gpu.totals.dropped == cpu.totals.dropped);
+    CHECK(gpu.steps == cpu.steps);
+    CHECK(gpu.photonsCut == cpu.photonsCut);
+    CHECK(gpu.skippedLights == cpu.skippedLights);
+    int photonMismatches = 0;
+    for (size_t i = 0; i < gpu.photons.size(); ++i)
+        if (!sameBits(&gpu.photons[i], &cpu.photons[i], sizeof(shared::GpuPhoton)))
+            ++photonMismatches;
+    int radianceMismatches = 0, directionMismatches = 0;
+    bool allFinite = true;
+    for (size_t i = 0; i < gpu.radiance.size() && i < cpu.radiance.size(); ++i) {
+        radianceMismatches += gpu.radiance[i] != cpu.radiance[i];
+        directionMismatches += gpu.direction[i] != cpu.direction[i];
+        allFinite = allFinite && finite(gpu.radiance[i]) && finite(gpu.direction[i]);
+    }
+    INFO(photonMismatches << " photons, " << radianceMismatches << " radiance voxels, "
+                          << directionMismatches << " direction voxels differ; " << gpu.steps
+                          << " steps");
+    CHECK(photonMismatches == 0);
+    CHECK(radianceMismatches == 0);
+    CHECK(directionMismatches == 0);
+    CHECK(sameBits(gpu.radiance, cpu.radiance));
+    CHECK(sameBits(gpu.direction, cpu.direction));
+    CHECK(allFinite);
+}
+
+float ball(glm::vec3 x) {
+    return 0.5f - 0.5f * std::tanh((glm::length(x) - 0.5f) / 0.1f);
+}
+
+}  // namespace
+
+TEST_CASE("GPU photons equal the CPU twin: straight n = 1 and a linear n^2 gradient",
+          "[photons][gpu]") {
+    auto context = createHeadlessContext();
+    GpuRun gpu;
+    SECTION("uniform n = 1, clear") {
+        const GpuPhotonScene s(32, 1.0f, glm::vec3(0.0f),
+                               glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f)),
+                               [](glm::vec3) { return 0.0f; });
+        PhotonSettings settings;
+        settings.photonsPerSide = 48;
+        requireIdentical(gpu.trace(s, settings), s.traceCpu(settings));
+    }
+    SECTION("linear n^2 gradient") {
+        const GpuPhotonScene s(32, 2.0f, glm::vec3(0.0f),
+                               glm::normalize(glm::vec3(0.15f, -1.0f, -0.25f)),
+                               eikon::test::linearN2Field);
+        PhotonSettings settings;
+        settings.photonsPerSide = 16;
+        requireIdentical(gpu.trace(s, settings), s.traceCpu(settings));
+    }
+}
+
+TEST_CASE("GPU photons equal the CPU twin with refraction and extinction", "[photons][gpu]") {
+    auto context = createHeadlessContext();
+    GpuRun gpu;
+    SECTION("energy balance: a soft n = 1.5 ball, absorbing, some photons dropped") {
+        const GpuPhotonScene s(32, 1.5f, glm::vec3(4.0f, 6.0f, 10.0f),
+                               glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f)), ball,
+                               glm::vec3(1.0f, 0.7f, 0.4f));
+        PhotonSettings settings;
+        settings.photonsPerSide = 64;
+        settings.fluxThreshold = 0.05f;
+        const PhotonResultCpu r = gpu.trace(s, settings);
+        requireIdentical(r, s.traceCpu(settings));
+        CHECK(r.totals.dropped.z > 0.0);
+    }
+    SECTION("a sharp n = 2.4 ball under grazing light") {
+        for (glm::vec3 d : {glm::vec3(1.0f, -0.002f, 0.0f), glm::vec3(0.3f, -1.0f, 0.001f)}) {
+            const GpuPhotonScene s(32, 2.4f, glm::vec3(0.3f, 0.6f, 1.0f), glm::normalize(d),
+                                   [](glm::vec3 x) { return glm::length(x) < 0.5f ? 1.0f : 0.0f; });
+            PhotonSettings settings;
+            settings.photonsPerSide = 64;
+            settings.maxSteps = 4000;
+            INFO("direction " << d.x << " " << d.y << " " << d.z);
+            requireIdentical(gpu.trace(s, settings), s.traceCpu(settings));
+        }
+    }
+}
+
+TEST_CASE("two GPU photon runs are identical", "[photons][gpu]") {
+    auto context = createHeadlessContext();
+    GpuRun gpu;
+    const GpuPhotonScene s(24, 1.5f, glm::vec3(1.0f, 2.0f, 4.0f),
+                           glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f)), ball,
+                           glm::vec3(1.0f, 0.7f, 0.4f));
+    PhotonSettings settings;
+    settings.photonsPerSide = 48;
+    settings.seed = 7;
+    const PhotonResultCpu one = gpu.trace(s, settings);
+    const PhotonResultCpu two = gpu.trace(s, settings);  // buffers reused: cleared between runs
+    requireIdentical(one, two);
+}
+
+TEST_CASE("with the driver's own math the GPU photons agree with the CPU twin in total",
+          "[photons][gpu]") {
+    // What a hardware GPU runs (no EK_EXACT_MATH): single photons may take other paths after a
+    // last-bit difference, but the energy budget and the deposited total must agree closely.
+    auto context = createHeadlessContext();
+    GpuRun gpu(/*exactMath=*/false);
+    const GpuPhotonScene s(32, 1.5f, glm::vec3(4.0f, 6.0f, 10.0f),
+                           glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f)), ball,
+                           glm::vec3(1.0f, 0.7f, 0.4f));
+    PhotonSettings settings;
+    settings.photonsPerSide = 64;
+    const PhotonResultCpu r = gpu.trace(s, settings);
+    const PhotonResultCpu cpu = s.traceCpu(settings);
+    for (int c = 0; c < 3; ++c) {
+        INFO("channel " << c);
+        CHECK(r.totals.emitted[c] == Approx(cpu.totals.emitted[c]).epsilon(1e-6));
+        CHECK(r.totals.escaped[c] == Approx(cpu.totals.escaped[c]).epsilon(1e-3));
+        double deposited = 0.0, deposited0 = 0.0;
+        for (size_t i = 0; i < r.radiance.size(); ++i) {
+            deposited += r.radiance[i][c];
+            deposited0 += cpu.radiance[i][c];
+        }
+        CHECK(deposited == Approx(deposited0).epsilon(1e-3));
+        const double balance = r.totals.emitted[c] - r.totals.escaped[c] -
+                               r.totals.extinguished[c] - r.totals.dropped[c];
+        CHECK(std::abs(balance) < 1e-6 * r.totals.emitted[c]);
+    }
+}
