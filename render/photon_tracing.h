@@ -64,6 +64,17 @@ struct PhotonResultCpu {
     std::vector<shared::GpuPhoton> photons;
 };
 
+// What the settings mean for a given volume, derived once for both backends.
+struct PhotonPlan {
+    glm::ivec3 resolution{0};
+    size_t voxels = 0;
+    int side = 1;          // photons per side of a light's grid
+    size_t perLight = 1;   // side²
+    float minStep = 0.0f;  // Δs_min in scene units
+    int maxSteps = 0;      // per photon
+};
+PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings);
+
 // Traces N² photons from every directional light of setup through the media: slotGrids are the
 // field volumes (as for computeIndexGradientCpu), gradient and octree the refraction volumes.
 PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,

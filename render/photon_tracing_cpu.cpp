@@ -66,6 +66,21 @@ struct FixedTotals {
 
 }  // namespace
 
+PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings) {
+    PhotonPlan plan;
+    plan.resolution = glm::ivec3(setup.params.resolution);
+    const glm::ivec3 res = plan.resolution;
+    plan.voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
+    plan.side = std::max(settings.photonsPerSide, 1);
+    plan.perLight = size_t(plan.side) * size_t(plan.side);
+    plan.minStep = octreeStepInScene(setup, settings.minStepVoxels);
+    // By default a photon may cross the volume 16 times at the minimum step (a trapped path).
+    plan.maxSteps = settings.maxSteps > 0 ? settings.maxSteps
+                                          : int(std::ceil(16.0f * float(res.x + res.y + res.z) /
+                                                          std::max(settings.minStepVoxels, 1e-3f)));
+    return plan;
+}
+
 PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
                                      const std::vector<const DenseGrid*>& slotGrids,
                                      const RefractionVolumeCpu& gradient,
@@ -77,16 +92,14 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
     kernel.octree = octree.data();
 
     PhotonResultCpu result;
-    const glm::ivec3 res = glm::ivec3(setup.params.resolution);
+    const PhotonPlan plan = planPhotons(setup, settings);
+    const glm::ivec3 res = plan.resolution;
     result.resolution = res;
-    const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
-    const int side = std::max(settings.photonsPerSide, 1);
-    const size_t perLight = size_t(side) * size_t(side);
-    const float minStep = octreeStepInScene(setup, settings.minStepVoxels);
-    const int maxSteps = settings.maxSteps > 0
-                             ? settings.maxSteps
-                             : int(std::ceil(16.0f * float(res.x + res.y + res.z) /
-                                             std::max(settings.minStepVoxels, 1e-3f)));
+    const size_t voxels = plan.voxels;
+    const int side = plan.side;
+    const size_t perLight = plan.perLight;
+    const float minStep = plan.minStep;
+    const int maxSteps = plan.maxSteps;
 
     // Step 4: generate every light's photons; the emitted power, summed in index order, sets the
     // fixed-point scales before anything is deposited.

@@ -95,16 +95,14 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
                             GpuStageTimer* timer) {
     // The same derived settings as traceLightPhotonsCpu.
     PhotonResultCpu host;
-    const glm::ivec3 res = glm::ivec3(setup.params.resolution);
+    const PhotonPlan plan = planPhotons(setup, settings);
+    const glm::ivec3 res = plan.resolution;
     host.resolution = res;
-    const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
-    const int side = std::max(settings.photonsPerSide, 1);
-    const size_t perLight = size_t(side) * size_t(side);
-    const float minStep = octreeStepInScene(setup, settings.minStepVoxels);
-    const int maxSteps = settings.maxSteps > 0
-                             ? settings.maxSteps
-                             : int(std::ceil(16.0f * float(res.x + res.y + res.z) /
-                                             std::max(settings.minStepVoxels, 1e-3f)));
+    const size_t voxels = plan.voxels;
+    const int side = plan.side;
+    const size_t perLight = plan.perLight;
+    const float minStep = plan.minStep;
+    const int maxSteps = plan.maxSteps;
     std::vector<int> traced;
     for (int l = 0; l < setup.params.image.z; ++l) {
         if (int(setup.params.lights[l].position.w) == EK_LIGHT_DIRECTIONAL)
