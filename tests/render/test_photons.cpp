@@ -17,6 +17,7 @@
 #include "render/shader_program.h"
 #include "render/volume_kernels_cpu.h"
 #include "support/linear_n2_medium.h"
+#include "support/photon_scene.h"
 
 EK_NAMESPACE_BEGIN
 // The shared photon functions with nothing to deposit into: for the photons' starting states.
@@ -31,54 +32,16 @@ using namespace eikon;
 
 namespace {
 
-// One material on one field over [-1, 1]^3, lit by one directional light.
-struct PhotonScene {
-    Scene scene;
-    DenseGrid field;
-    ViewSetup setup;
-    RefractionVolumeCpu gradient;
-    RefractionVolumeCpu octree;
+using eikon::test::PhotonScene;
 
-    PhotonScene(int res, float ior, glm::vec3 absorption, glm::vec3 lightDir,
-                const std::function<float(glm::vec3)>& f, glm::vec3 lightColor = glm::vec3(1.0f),
-                const OctreeSettings& octreeSettings = {}) {
-        MaterialSpec m;
-        m.name = "medium";
-        m.ior = ior;
-        m.absorption = absorption;
-        scene.materials.push_back(m);
-        LightSpec light;
-        light.type = LightType::Directional;
-        light.direction = lightDir;
-        light.color = lightColor;
-        scene.lights.push_back(light);
-        scene.render.width = scene.render.height = 4;
-        field.field = "density";
-        field.volume = {{glm::vec3(-1.0f), glm::vec3(1.0f)}, glm::ivec3(res)};
-        field.values.resize(field.volume.voxelCount());
-        for (int k = 0; k < res; ++k)
-            for (int j = 0; j < res; ++j)
-                for (int i = 0; i < res; ++i)
-                    field.values[field.index(i, j, k)] = f(field.volume.voxelCenter(i, j, k));
-        setup = makeViewSetup(scene, field.volume,
-                              makeCameraFrame(scene.camera, field.volume.bounds, 4, 4));
-        gradient = computeIndexGradientCpu(setup, {&field});
-        octree = computeOctreeCpu(setup, gradient, octreeSettings);
-    }
-
-    PhotonResultCpu trace(const PhotonSettings& s) const {
-        return traceLightPhotonsCpu(setup, {&field}, gradient, octree, s);
-    }
-
-    // Photon `index`'s starting state, from the shared generator.
-    shared::GpuPhoton start(const PhotonSettings& s, int index) const {
-        shared::PhotonTestKernel k{{setup.params}};
-        k.fields[0] = field.values.data();
-        k.gradient = gradient.data();
-        return k.generateDirectionalPhoton(0, s.photonsPerSide, index, s.seed, glm::uint(s.frame),
-                                           s.fluxThreshold);
-    }
-};
+// Photon `index`'s starting state in scene `p`, from the shared generator.
+shared::GpuPhoton photonStart(const PhotonScene& p, const PhotonSettings& s, int index) {
+    shared::PhotonTestKernel k{{p.setup.params}};
+    k.fields[0] = p.field.values.data();
+    k.gradient = p.gradient.data();
+    return k.generateDirectionalPhoton(0, s.photonsPerSide, index, s.seed, glm::uint(s.frame),
+                                       s.fluxThreshold);
+}
 
 float voxelSize(const PhotonScene& s) {
     return s.field.volume.voxelSize().x;
@@ -130,7 +93,7 @@ TEST_CASE("photons in a uniform n = 1 clear medium leave where straight lines do
     double worst = 0.0;
     int checked = 0;
     for (int i = 0; i < int(r.photons.size()); ++i) {
-        const shared::GpuPhoton start = s.start(settings, i);
+        const shared::GpuPhoton start = photonStart(s, settings, i);
         if (int(start.position.w) != EK_PHOTON_ACTIVE) continue;
         const shared::GpuPhoton& end = r.photons[size_t(i)];
         REQUIRE(int(end.position.w) == EK_PHOTON_ESCAPED);
@@ -188,7 +151,7 @@ TEST_CASE("photons in a linear n^2 gradient follow the closed-form parabola", "[
         double worst = 0.0;
         int checked = 0;
         for (int i = 0; i < int(r.photons.size()); ++i) {
-            const shared::GpuPhoton start = s.start(settings, i);
+            const shared::GpuPhoton start = photonStart(s, settings, i);
             if (int(start.position.w) != EK_PHOTON_ACTIVE) continue;
             const shared::GpuPhoton& end = r.photons[size_t(i)];
             REQUIRE(int(end.position.w) == EK_PHOTON_ESCAPED);

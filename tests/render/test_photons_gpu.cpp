@@ -14,51 +14,14 @@
 #include "render/refraction_volume.h"
 #include "render/volume_textures.h"
 #include "support/linear_n2_medium.h"
+#include "support/photon_scene.h"
 
 using namespace eikon;
 
 namespace {
 
-// One material on one field over [-1, 1]^3, lit by one directional light (as in
-// test_photons.cpp), with its refraction volumes on both sides.
-struct GpuPhotonScene {
-    Scene scene;
-    DenseGrid field;
-    ViewSetup setup;
-    RefractionVolumeCpu gradient;
-    RefractionVolumeCpu octree;
-
-    GpuPhotonScene(int res, float ior, glm::vec3 absorption, glm::vec3 lightDir,
-                   const std::function<float(glm::vec3)>& f,
-                   glm::vec3 lightColor = glm::vec3(1.0f)) {
-        MaterialSpec m;
-        m.name = "medium";
-        m.ior = ior;
-        m.absorption = absorption;
-        scene.materials.push_back(m);
-        LightSpec light;
-        light.type = LightType::Directional;
-        light.direction = lightDir;
-        light.color = lightColor;
-        scene.lights.push_back(light);
-        scene.render.width = scene.render.height = 4;
-        field.field = "density";
-        field.volume = {{glm::vec3(-1.0f), glm::vec3(1.0f)}, glm::ivec3(res)};
-        field.values.resize(field.volume.voxelCount());
-        for (int k = 0; k < res; ++k)
-            for (int j = 0; j < res; ++j)
-                for (int i = 0; i < res; ++i)
-                    field.values[field.index(i, j, k)] = f(field.volume.voxelCenter(i, j, k));
-        setup = makeViewSetup(scene, field.volume,
-                              makeCameraFrame(scene.camera, field.volume.bounds, 4, 4));
-        gradient = computeIndexGradientCpu(setup, {&field});
-        octree = computeOctreeCpu(setup, gradient);
-    }
-
-    PhotonResultCpu traceCpu(const PhotonSettings& s) const {
-        return traceLightPhotonsCpu(setup, {&field}, gradient, octree, s);
-    }
-};
+// The photon test scene of test_photons.cpp, with its refraction volumes on both sides.
+using GpuPhotonScene = eikon::test::PhotonScene;
 
 // Runs the GPU pass; also checks that the GPU's own refraction volumes equal the CPU twin's, which
 // every comparison below relies on.
@@ -145,7 +108,7 @@ TEST_CASE("GPU photons equal the CPU twin: straight n = 1 and a linear n^2 gradi
                                [](glm::vec3) { return 0.0f; });
         PhotonSettings settings;
         settings.photonsPerSide = 48;
-        requireIdentical(gpu.trace(s, settings), s.traceCpu(settings));
+        requireIdentical(gpu.trace(s, settings), s.trace(settings));
     }
     SECTION("linear n^2 gradient") {
         const GpuPhotonScene s(32, 2.0f, glm::vec3(0.0f),
@@ -153,7 +116,7 @@ TEST_CASE("GPU photons equal the CPU twin: straight n = 1 and a linear n^2 gradi
                                eikon::test::linearN2Field);
         PhotonSettings settings;
         settings.photonsPerSide = 16;
-        requireIdentical(gpu.trace(s, settings), s.traceCpu(settings));
+        requireIdentical(gpu.trace(s, settings), s.trace(settings));
     }
 }
 
@@ -168,7 +131,7 @@ TEST_CASE("GPU photons equal the CPU twin with refraction and extinction", "[pho
         settings.photonsPerSide = 64;
         settings.fluxThreshold = 0.05f;
         const PhotonResultCpu r = gpu.trace(s, settings);
-        requireIdentical(r, s.traceCpu(settings));
+        requireIdentical(r, s.trace(settings));
         CHECK(r.totals.dropped.z > 0.0);
     }
     SECTION("a sharp n = 2.4 ball under grazing light") {
@@ -179,7 +142,7 @@ TEST_CASE("GPU photons equal the CPU twin with refraction and extinction", "[pho
             settings.photonsPerSide = 64;
             settings.maxSteps = 4000;
             INFO("direction " << d.x << " " << d.y << " " << d.z);
-            requireIdentical(gpu.trace(s, settings), s.traceCpu(settings));
+            requireIdentical(gpu.trace(s, settings), s.trace(settings));
         }
     }
 }
@@ -210,7 +173,7 @@ TEST_CASE("with the driver's own math the GPU photons agree with the CPU twin in
     PhotonSettings settings;
     settings.photonsPerSide = 64;
     const PhotonResultCpu r = gpu.trace(s, settings);
-    const PhotonResultCpu cpu = s.traceCpu(settings);
+    const PhotonResultCpu cpu = s.trace(settings);
     for (int c = 0; c < 3; ++c) {
         INFO("channel " << c);
         CHECK(r.totals.emitted[c] == Approx(cpu.totals.emitted[c]).epsilon(1e-6));
