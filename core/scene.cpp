@@ -392,6 +392,31 @@ EnvironmentSpec readEnvironment(const Value& value) {
     return environment;
 }
 
+// Photons per side beyond this would take minutes per light on a CPU and overflow int indices.
+constexpr std::int64_t kMaxPhotonsPerSide = 8192;
+
+PhotonRenderSettings readPhotons(const Value& value) {
+    Object object(value, "the photon settings");
+    PhotonRenderSettings photons;
+    if (auto mode = object.optional("mode")) {
+        const std::string m = mode->choice({"auto", "on", "off"});
+        photons.mode = m == "auto" ? PhotonMode::Auto
+                       : m == "on" ? PhotonMode::On
+                                   : PhotonMode::Off;
+    }
+    if (auto side = object.optional("per_side")) {
+        photons.perSide = static_cast<int>(side->integer(1, kMaxPhotonsPerSide));
+    }
+    if (auto step = object.optional("min_step_voxels")) {
+        photons.minStepVoxels = step->floatNumber(Range::greaterThan(0.0));
+    }
+    if (auto threshold = object.optional("flux_threshold")) {
+        photons.fluxThreshold = threshold->floatNumber(Range::closedOpen(0.0, 1.0));
+    }
+    object.finish();
+    return photons;
+}
+
 RenderSettings readRender(const Value& value) {
     Object object(value, "the render settings");
     RenderSettings render;
@@ -421,6 +446,7 @@ RenderSettings readRender(const Value& value) {
         render.seed =
             static_cast<std::uint32_t>(seed->integer(0, std::numeric_limits<std::uint32_t>::max()));
     }
+    if (auto photons = object.optional("photons")) render.photons = readPhotons(*photons);
     object.finish();
     return render;
 }

@@ -95,6 +95,18 @@ struct EnvironmentSpec {
 // toward the light from every sample (the reference, as OpenVDB's vdb_render does).
 enum class ShadowMode { Volume, Swept, Marched };
 
+// Whether light reaches the medium through photons traced along curved paths (Sun et al. 2008;
+// render/photon_radiance.h) or straight through light volumes. Auto: photons when light can bend
+// on its way (some material has ior ≠ 1) and something scatters it toward the camera.
+enum class PhotonMode { Auto, On, Off };
+
+struct PhotonRenderSettings {
+    PhotonMode mode = PhotonMode::Auto;
+    int perSide = 128;            // N: N×N photons per light (six N×N faces for a light inside)
+    float minStepVoxels = 1.0f;   // Δs_min of the adaptive march, in voxels
+    float fluxThreshold = 1e-4f;  // a photon is dropped below this fraction of its initial flux
+};
+
 struct RenderSettings {
     int width = 640;
     int height = 480;
@@ -105,6 +117,7 @@ struct RenderSettings {
     ShadowMode shadows = ShadowMode::Swept;  // fastest, and most accurate at default steps
                                              // on smoke (BENCHMARKS.md)
     std::uint32_t seed = 0;
+    PhotonRenderSettings photons;
 };
 
 struct OutputSettings {

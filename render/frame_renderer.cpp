@@ -6,6 +6,7 @@
 #include "core/resample.h"
 #include "render/gl_context.h"
 #include "render/params_buffer.h"
+#include "render/photon_radiance.h"
 #include "render/refraction_volume.h"
 #include "render/view_params.h"
 #include "render/view_pass.h"
@@ -38,6 +39,8 @@ FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* con
         textures_ = std::make_unique<VolumeTextures>();
         paramsBuffer_ = std::make_unique<ParamsBuffer>();
         hardwareTrilinear_ = useHardwareTrilinear(*gl_);
+        // The CPU twin's rounding where it is cheap (software rasterizers): bit-identical photons.
+        exactPhotonMath_ = isSoftwareRenderer(gl_->rendererName());
         lightVolumesGpu_ = std::make_unique<LightVolumesGpu>(hardwareTrilinear_);
         viewPass_ = std::make_unique<ViewPassGpu>(hardwareTrilinear_);
         refractionGpu_ = std::make_unique<RefractionVolumesGpu>();
@@ -49,6 +52,7 @@ FrameRenderer::~FrameRenderer() {
     // GL objects go before the context that owns them.
     timer_.reset();
     viewPass_.reset();
+    photonsGpu_.reset();
     refractionGpu_.reset();
     lightVolumesGpu_.reset();
     paramsBuffer_.reset();
@@ -58,42 +62,59 @@ FrameRenderer::~FrameRenderer() {
 
 namespace {
 
-// The bytes the light volumes depend on: the parameters without camera and image settings, and
-// the versions of the field grids. Equal bytes, equal volumes.
+void appendBytes(std::vector<unsigned char>& key, const void* data, size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    key.insert(key.end(), bytes, bytes + size);
+}
+
+void appendVersions(std::vector<unsigned char>& key, const std::vector<const DenseGrid*>& grids) {
+    for (const DenseGrid* g : grids) appendBytes(key, &g->version, sizeof(g->version));
+}
+
+// The bytes the light volumes and the photon volumes depend on: the parameters without camera
+// and image settings, and the versions of the field grids. Equal bytes, equal volumes.
 std::vector<unsigned char> lightVolumeInputs(const ViewSetup& setup,
                                              const std::vector<const DenseGrid*>& grids) {
     shared::GpuViewParams p = setup.params;
     p.cameraOrigin = p.cameraRight = p.cameraUp = p.cameraForward = glm::vec4(0.0f);
     p.image.x = p.image.y = 0;
     p.background = glm::vec4(0.0f);
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&p);
-    std::vector<unsigned char> key(bytes, bytes + sizeof(p));
-    for (const DenseGrid* g : grids) {
-        const auto* v = reinterpret_cast<const unsigned char*>(&g->version);
-        key.insert(key.end(), v, v + sizeof(g->version));
-    }
+    std::vector<unsigned char> key;
+    appendBytes(key, &p, sizeof(p));
+    appendVersions(key, grids);
     return key;
 }
 
-// The bytes the ∇n volume depends on: the volume, the materials' ior and field slots, and the
-// versions of the field grids.
+// The photon volumes: the light volumes' inputs and the photon settings.
+std::vector<unsigned char> photonInputs(const ViewSetup& setup,
+                                        const std::vector<const DenseGrid*>& grids,
+                                        const PhotonSettings& settings) {
+    std::vector<unsigned char> key = lightVolumeInputs(setup, grids);
+    appendBytes(key, &settings.photonsPerSide, sizeof(settings.photonsPerSide));
+    appendBytes(key, &settings.minStepVoxels, sizeof(settings.minStepVoxels));
+    appendBytes(key, &settings.fluxThreshold, sizeof(settings.fluxThreshold));
+    appendBytes(key, &settings.maxSteps, sizeof(settings.maxSteps));
+    appendBytes(key, &settings.seed, sizeof(settings.seed));
+    appendBytes(key, &settings.frame, sizeof(settings.frame));
+    return key;
+}
+
+// The bytes the ∇n volume (and the octree built on its n) depend on: the volume, the materials'
+// ior and field slots, and the versions of the field grids.
 std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
                                           const std::vector<const DenseGrid*>& grids) {
     const shared::GpuViewParams& p = setup.params;
-    std::vector<float> values = {p.volumeMin.x, p.volumeMin.y, p.volumeMin.z,
-                                 p.volumeMax.x, p.volumeMax.y, p.volumeMax.z,
-                                 float(p.resolution.x), float(p.resolution.y),
-                                 float(p.resolution.z), float(p.resolution.w)};
+    std::vector<float> values = {
+        p.volumeMin.x,         p.volumeMin.y,        p.volumeMin.z,         p.volumeMax.x,
+        p.volumeMax.y,         p.volumeMax.z,        float(p.resolution.x), float(p.resolution.y),
+        float(p.resolution.z), float(p.resolution.w)};
     for (int m = 0; m < p.resolution.w; ++m) {
         values.push_back(p.materials[m].emission.w);
         values.push_back(float(p.materials[m].slot.x));
     }
-    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-    std::vector<unsigned char> key(bytes, bytes + values.size() * sizeof(float));
-    for (const DenseGrid* g : grids) {
-        const auto* v = reinterpret_cast<const unsigned char*>(&g->version);
-        key.insert(key.end(), v, v + sizeof(g->version));
-    }
+    std::vector<unsigned char> key;
+    appendBytes(key, values.data(), values.size() * sizeof(float));
+    appendVersions(key, grids);
     return key;
 }
 
@@ -136,17 +157,35 @@ Image FrameRenderer::render(int frame) {
     if (needLights) lightInputs = lightVolumeInputs(setup, slotGrids);
     const bool lightsChanged = needLights && lightInputs != lightInputs_;
     const bool curved = setup.params.pipeline.x != 0;
+    const bool photons = setup.params.pipeline.y != 0;
+    // Photons march through the ∇n and octree volumes even where n ≡ 1 (their steps then grow
+    // to the octree's limit).
     std::vector<unsigned char> refractionInputs;
-    if (curved) refractionInputs = gradientInputs(setup, slotGrids);
-    const bool gradientChanged = curved && refractionInputs != gradientInputs_;
+    if (curved || photons) refractionInputs = gradientInputs(setup, slotGrids);
+    const bool gradientChanged = (curved || photons) && refractionInputs != gradientInputs_;
+    const bool octreeChanged = photons && refractionInputs != octreeInputs_;
+    const PhotonSettings photonSettings = photonSettingsFor(scene_);
+    std::vector<unsigned char> photonKey;
+    if (photons) photonKey = photonInputs(setup, slotGrids, photonSettings);
+    const bool photonsChanged = photons && photonKey != photonInputs_;
 
     if (backend_ == Backend::Cpu) {
         if (gradientChanged) {
             timer_->begin("gradient");
             gradientCpu_ = computeIndexGradientCpu(setup, slotGrids);
             timer_->end();
-            gradientInputs_ = std::move(refractionInputs);
-            ++gradientUpdates_;
+        }
+        if (octreeChanged) {
+            timer_->begin("octree");
+            octreeCpu_ = computeOctreeCpu(setup, gradientCpu_);
+            timer_->end();
+        }
+        if (photonsChanged) {
+            timer_->begin("photons");
+            photonsCpu_ = computePhotonRadianceCpu(setup, slotGrids, gradientCpu_, octreeCpu_,
+                                                   photonSettings);
+            timer_->end();
+            photonSteps_ += photonsCpu_.steps;
         }
         if (lightsChanged) {
             timer_->begin("light");
@@ -154,32 +193,56 @@ Image FrameRenderer::render(int frame) {
             timer_->end();
         }
         timer_->begin("view");
-        Image image = renderViewCpu(setup, slotGrids,
-                                    needLights ? lightVolumesCpu_ : std::vector<LightVolumeCpu>{},
-                                    curved ? gradientCpu_ : std::vector<glm::vec4>{});
+        Image image = renderViewCpu(
+            setup, slotGrids, needLights ? lightVolumesCpu_ : std::vector<LightVolumeCpu>{},
+            curved ? gradientCpu_ : std::vector<glm::vec4>{}, photons ? &photonsCpu_ : nullptr);
         timer_->end();
-        if (lightsChanged) {
-            lightInputs_ = std::move(lightInputs);
-            ++lightVolumeUpdates_;
-        }
+        commitInputs(gradientChanged, octreeChanged, photonsChanged, lightsChanged,
+                     std::move(refractionInputs), std::move(photonKey), std::move(lightInputs));
         return image;
     }
     timer_->begin("upload");
     textures_->update(slotGrids);
     paramsBuffer_->upload(setup.params);
     timer_->end();
+    if (gradientChanged || octreeChanged)
+        refractionGpu_->compute(setup, *textures_, {}, timer_.get(), /*withOctree=*/photons);
+    if (photonsChanged) {
+        if (!photonsGpu_) photonsGpu_ = std::make_unique<PhotonRadianceGpu>(exactPhotonMath_);
+        photonsGpu_->compute(setup, *textures_, *refractionGpu_, photonSettings, timer_.get());
+        photonSteps_ += photonsGpu_->lastSteps();
+    }
+    if (lightsChanged) lightVolumesGpu_->compute(setup, *textures_, timer_.get());
+    commitInputs(gradientChanged, octreeChanged, photonsChanged, lightsChanged,
+                 std::move(refractionInputs), std::move(photonKey), std::move(lightInputs));
+    return viewPass_->render(setup, *textures_, *lightVolumesGpu_,
+                             curved ? refractionGpu_->gradientTexture() : 0u,
+                             photons ? photonsGpu_.get() : nullptr, timer_.get());
+}
+
+void FrameRenderer::commitInputs(bool gradientChanged, bool octreeChanged, bool photonsChanged,
+                                 bool lightsChanged, std::vector<unsigned char> refractionInputs,
+                                 std::vector<unsigned char> photonKey,
+                                 std::vector<unsigned char> lightInputs) {
+    if (octreeChanged) octreeInputs_ = refractionInputs;
     if (gradientChanged) {
-        refractionGpu_->compute(setup, *textures_, {}, timer_.get(), /*withOctree=*/false);
         gradientInputs_ = std::move(refractionInputs);
         ++gradientUpdates_;
     }
+    if (photonsChanged) {
+        photonInputs_ = std::move(photonKey);
+        ++photonUpdates_;
+    }
     if (lightsChanged) {
-        lightVolumesGpu_->compute(setup, *textures_, timer_.get());
         lightInputs_ = std::move(lightInputs);
         ++lightVolumeUpdates_;
     }
-    return viewPass_->render(setup, *textures_, *lightVolumesGpu_,
-                             curved ? refractionGpu_->gradientTexture() : 0u, timer_.get());
+}
+
+PhotonRadianceCpu FrameRenderer::photonVolumes() const {
+    if (backend_ == Backend::Gpu)
+        return photonsGpu_ ? photonsGpu_->download() : PhotonRadianceCpu{};
+    return photonsCpu_;
 }
 
 }  // namespace eikon

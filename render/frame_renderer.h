@@ -1,8 +1,10 @@
 #pragma once
-// One frame from scene to image: sources -> fields -> dense volumes -> (upload) -> viewing pass.
-// Each step reruns only when its input changed: files are read when the frame's file changes,
-// fields are resampled when their version or the volume changes, textures are uploaded when the
-// resampled grid changes. Runs on the GPU (headless EGL context it owns) or on the CPU twin.
+// One frame from scene to image: sources -> fields -> dense volumes -> (upload) -> ∇n, octree ->
+// photons or light volumes -> viewing pass. Each step reruns only when its input changed: files
+// are read when the frame's file changes, fields are resampled when their version or the volume
+// changes, textures are uploaded when the resampled grid changes, photons are traced when
+// lights, optics, the volume or the photon settings change (ARCHITECTURE.md's table). Runs on
+// the GPU (headless EGL context it owns) or on the CPU twin.
 #include <map>
 #include <memory>
 #include <string>
@@ -15,11 +17,13 @@
 #include "render/gpu_timer.h"
 #include "render/image.h"
 #include "render/light_volume.h"
+#include "render/photon_radiance.h"
 
 namespace eikon {
 
 class GlContext;
 class LightVolumesGpu;
+class PhotonRadianceGpu;
 class RefractionVolumesGpu;
 class ParamsBuffer;
 class VolumeTextures;
@@ -52,10 +56,22 @@ public:
     // How often the ∇n volume was computed: only for scenes with some ior ≠ 1, and only when
     // fields, materials' ior or the volume changed.
     int gradientUpdates() const { return gradientUpdates_; }
+    // How often photons were traced (only when lights, extinction, n, the volume or the photon
+    // settings changed), and the photon steps all those traces took together.
+    int photonUpdates() const { return photonUpdates_; }
+    int64_t photonSteps() const { return photonSteps_; }
+    // The smoothed photon volumes of the last trace (the GPU's read back), for tests; empty
+    // when the scene has no photon lighting.
+    PhotonRadianceCpu photonVolumes() const;
     // Whether the GPU shaders let the texture unit filter (see useHardwareTrilinear).
     bool hardwareTrilinear() const { return hardwareTrilinear_; }
 
 private:
+    // Records what the stages that ran were computed from, and counts them.
+    void commitInputs(bool gradientChanged, bool octreeChanged, bool photonsChanged,
+                      bool lightsChanged, std::vector<unsigned char> refractionInputs,
+                      std::vector<unsigned char> photonKey, std::vector<unsigned char> lightInputs);
+
     Scene scene_;
     Backend backend_;
     std::unique_ptr<GlContext> ownContext_;
@@ -71,13 +87,21 @@ private:
     std::vector<LightVolumeCpu> lightVolumesCpu_;
     std::unique_ptr<RefractionVolumesGpu> refractionGpu_;
     std::vector<glm::vec4> gradientCpu_;
+    std::vector<glm::vec4> octreeCpu_;
+    std::unique_ptr<PhotonRadianceGpu> photonsGpu_;
+    PhotonRadianceCpu photonsCpu_;
     std::vector<unsigned char> gradientInputs_;  // what the ∇n volume was computed from
-    std::vector<unsigned char> lightInputs_;  // what the light volumes were computed from
+    std::vector<unsigned char> octreeInputs_;    // what the octree was computed from
+    std::vector<unsigned char> photonInputs_;    // what the photon volumes were traced from
+    std::vector<unsigned char> lightInputs_;     // what the light volumes were computed from
     std::unique_ptr<GpuStageTimer> timer_;
     int resamples_ = 0;
     int lightVolumeUpdates_ = 0;
     int gradientUpdates_ = 0;
+    int photonUpdates_ = 0;
+    int64_t photonSteps_ = 0;
     bool hardwareTrilinear_ = false;
+    bool exactPhotonMath_ = false;
 };
 
 }  // namespace eikon

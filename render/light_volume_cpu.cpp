@@ -11,6 +11,7 @@ namespace eikon {
 bool viewNeedsLightVolumes(const ViewSetup& setup) {
     const shared::GpuViewParams& p = setup.params;
     if (p.image.z == 0 || p.image.w == EK_SHADOWS_MARCHED) return false;
+    if (p.pipeline.z == (1 << p.image.z) - 1) return false;  // every light comes as photons
     for (int m = 0; m < p.resolution.w; ++m) {
         const glm::vec4& s = p.materials[m].scattering;
         if (s.x > 0.0f || s.y > 0.0f || s.z > 0.0f) return true;
@@ -29,6 +30,7 @@ std::vector<LightVolumeCpu> computeLightVolumesCpu(const ViewSetup& setup,
     for (int l = 0; l < p.image.z; ++l) {
         LightVolumeCpu& out = volumes[size_t(l)];
         out.assign(size_t(res.x) * size_t(res.y) * size_t(res.z), glm::vec4(1.0f));
+        if (lightComesAsPhotons(p, l)) continue;  // never read
         shared::LightKernelCpu k = kernel;
         k.sweepSlices = out.data();
         if (!k.sweepsLight(l)) {

@@ -61,6 +61,7 @@ void LightVolumesGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
     glBindImageTexture(1, texture_, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
     shared::LightKernelCpu hostKernel{{p}};  // the shared sweep decisions, on the host
     for (int l = 0; l < p.image.z; ++l) {
+        if (lightComesAsPhotons(p, l)) continue;  // never read
         if (!hostKernel.sweepsLight(l)) {
             march_->use();
             march_->setInt("lightIndex", l);

@@ -191,6 +191,14 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     host_ = std::move(host);
 }
 
+int64_t PhotonTracerGpu::stepsTaken() const {
+    GLuint words[2] = {0, 0};
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, totals_);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 18 * sizeof(GLuint), sizeof(words), words);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    return joinWords(words);
+}
+
 PhotonResultCpu PhotonTracerGpu::download() const {
     PhotonResultCpu r = host_;
     const glm::ivec3 res = r.resolution;

@@ -33,6 +33,13 @@ public:
 
     // The last trace's results, in the CPU twin's structure and units.
     PhotonResultCpu download() const;
+    // Photon steps of the last trace (reads back one int64).
+    int64_t stepsTaken() const;
+    // For the passes that read the deposits on the GPU (render/photon_radiance_gpu.cpp): the
+    // SSBO (6 int64 per voxel as (low, high) words, see shaders/photon_trace.comp) and its
+    // fixed-point scales.
+    unsigned depositBuffer() const { return deposits_; }
+    const glm::dvec4& fixedPointScale() const { return host_.fixedPointScale; }
 
 private:
     std::unique_ptr<ShaderProgram> generate_;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <glm/trigonometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "core/error.h"
 
@@ -82,7 +83,33 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     bool refracts = false;
     for (const MaterialSpec& mat : scene.materials) refracts = refracts || mat.ior != 1.0f;
     p.pipeline = glm::ivec4(refracts ? 1 : 0, 0, 0, 0);
+    if (scenePhotonsWanted(scene)) {
+        for (size_t l = 0; l < scene.lights.size(); ++l)
+            if (lightEmitsPhotons(scene.lights[l].type)) p.pipeline.z |= 1 << l;
+        p.pipeline.y = p.pipeline.z != 0 ? 1 : 0;
+    }
     return setup;
+}
+
+bool lightEmitsPhotons(LightType type) {
+    return type == LightType::Directional;
+}
+
+bool scenePhotonsWanted(const Scene& scene) {
+    bool refracts = false, scatters = false;
+    for (const MaterialSpec& mat : scene.materials) {
+        refracts = refracts || mat.ior != 1.0f;
+        scatters = scatters || glm::any(glm::greaterThan(mat.scattering, glm::vec3(0.0f)));
+    }
+    switch (scene.render.photons.mode) {
+        case PhotonMode::On:
+            return scatters;
+        case PhotonMode::Auto:
+            return scatters && refracts;
+        case PhotonMode::Off:
+            break;
+    }
+    return false;
 }
 
 }  // namespace eikon

@@ -18,4 +18,11 @@ struct ViewSetup {
 
 ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera);
 
+// Whether the viewing pass takes in-scattered light from photon volumes (scene.render.photons:
+// "on" when something scatters; "auto" when, besides, some material refracts, so that straight
+// light volumes would be wrong). makeViewSetup then sets params.pipeline.y and, in
+// pipeline.z, the lights that emit photons; the others keep their light volumes.
+bool scenePhotonsWanted(const Scene& scene);
+bool lightEmitsPhotons(LightType type);
+
 }  // namespace eikon

@@ -14,16 +14,19 @@ namespace eikon {
 
 class GpuStageTimer;
 class LightVolumesGpu;
+class PhotonRadianceGpu;
+struct PhotonRadianceCpu;
 class VolumeTextures;
 class ShaderProgram;
 
 // CPU twin: rows in parallel (TBB), each pixel independent, so the result does not depend on the
 // thread count. `lightVolumes` may be empty when viewNeedsLightVolumes(setup) is false.
 // `gradient` is the ∇n volume (render/refraction_volume.h) when setup.params.pipeline.x asks for
-// curved rays, else empty.
+// curved rays, else empty. `photons`: the smoothed photon volumes when pipeline.y asks for them.
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const std::vector<LightVolumeCpu>& lightVolumes,
-                    const std::vector<glm::vec4>& gradient = {});
+                    const std::vector<glm::vec4>& gradient = {},
+                    const PhotonRadianceCpu* photons = nullptr);
 
 // GPU pass; needs a current GL 4.3 context and the frame's parameters in the ParamsBuffer. Field
 // textures come from `textures` in slot order.
@@ -32,9 +35,11 @@ public:
     // hardwareTrilinear: let the texture unit filter (see shaders/shared/sampling.h).
     explicit ViewPassGpu(bool hardwareTrilinear = false);
     ~ViewPassGpu();
-    // gradientTexture: the ∇n volume for curved rays (0 when the rays are straight).
+    // gradientTexture: the ∇n volume for curved rays (0 when the rays are straight). photons:
+    // the smoothed photon volumes when setup.params.pipeline.y asks for them.
     Image render(const ViewSetup& setup, VolumeTextures& textures, const LightVolumesGpu& lights,
-                 unsigned gradientTexture, GpuStageTimer* timer = nullptr);
+                 unsigned gradientTexture, const PhotonRadianceGpu* photons = nullptr,
+                 GpuStageTimer* timer = nullptr);
 
 private:
     std::unique_ptr<ShaderProgram> program_;

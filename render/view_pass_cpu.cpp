@@ -2,6 +2,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
+#include "render/photon_radiance.h"
 #include "render/view_pass.h"
 #include "render/volume_kernels_cpu.h"
 
@@ -9,7 +10,7 @@ namespace eikon {
 
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const std::vector<LightVolumeCpu>& lightVolumes,
-                    const std::vector<glm::vec4>& gradient) {
+                    const std::vector<glm::vec4>& gradient, const PhotonRadianceCpu* photons) {
     const shared::GpuViewParams& p = setup.params;
     if (slotGrids.size() != setup.slotFields.size())
         throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
@@ -19,9 +20,18 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
         throw Error("view pass (CPU)", "the light volumes were not computed");
     for (size_t l = 0; l < lightVolumes.size(); ++l) kernel.lights[l] = lightVolumes[l].data();
     if (p.pipeline.x != 0) {
-        if (gradient.size() != size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z))
+        if (gradient.size() !=
+            size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z))
             throw Error("view pass (CPU)", "curved rays need the gradient volume");
         kernel.gradient = gradient.data();
+    }
+    if (p.pipeline.y != 0) {
+        const size_t voxels =
+            size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z);
+        if (!photons || photons->radiance.size() != voxels || photons->direction.size() != voxels)
+            throw Error("view pass (CPU)", "photon lighting needs the photon volumes");
+        kernel.photonRadiance = photons->radiance.data();
+        kernel.photonDirection = photons->direction.data();
     }
     for (size_t s = 0; s < slotGrids.size(); ++s) {
         const glm::ivec3 res = slotGrids[s]->volume.resolution;

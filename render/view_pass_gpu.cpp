@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "render/gpu_timer.h"
 #include "render/light_volume.h"
+#include "render/photon_radiance.h"
 #include "render/shader_program.h"
 #include "render/view_pass.h"
 #include "render/volume_textures.h"
@@ -21,7 +22,7 @@ ViewPassGpu::~ViewPassGpu() {
 
 Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
                           const LightVolumesGpu& lights, unsigned gradientTexture,
-                          GpuStageTimer* timer) {
+                          const PhotonRadianceGpu* photons, GpuStageTimer* timer) {
     const shared::GpuViewParams& p = setup.params;
     const int width = p.image.x, height = p.image.y;
     if (timer) timer->begin("view");
@@ -39,6 +40,10 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_3D, gradientTexture);
     glActiveTexture(GL_TEXTURE0);
+    if (p.pipeline.y != 0) {
+        if (!photons) throw Error("view pass", "photon lighting needs the photon volumes");
+        photons->bind();
+    }
     program_->use();
     const auto local = program_->localSize();
     glDispatchCompute(GLuint((width + local[0] - 1) / local[0]),

@@ -14,7 +14,9 @@ struct VolumeAccessCpu {
     const GpuViewParams& params;
     const float* fields[EK_MAX_MATERIALS] = {};
     const vec4* lights[EK_MAX_LIGHTS] = {};
-    const vec4* gradient = nullptr;  // the ∇n volume, for curved rays
+    const vec4* gradient = nullptr;         // the ∇n volume, for curved rays
+    const vec4* photonRadiance = nullptr;   // the smoothed photon volumes, when the view reads
+    const vec4* photonDirection = nullptr;  // them (pipeline.y)
 
     size_t voxelIndex(ivec3 v) const {
         return (size_t(v.z) * size_t(params.resolution.y) + size_t(v.y)) *
@@ -24,6 +26,8 @@ struct VolumeAccessCpu {
     vec4 fetchVolume(int slot, ivec3 v) const {
         if (slot < EK_MAX_MATERIALS) return vec4(fields[slot][voxelIndex(v)], 0.0f, 0.0f, 0.0f);
         if (slot == EK_GRADIENT_SLOT) return gradient[voxelIndex(v)];
+        if (slot == EK_PHOTON_RADIANCE_SLOT) return photonRadiance[voxelIndex(v)];
+        if (slot == EK_PHOTON_DIRECTION_SLOT) return photonDirection[voxelIndex(v)];
         return lights[slot - EK_MAX_MATERIALS][voxelIndex(v)];
     }
 

@@ -11,6 +11,9 @@ layout(std430, binding = 0) readonly buffer ViewParamsBlock { GpuViewParams para
 layout(binding = 0) uniform sampler3D fieldTex;  // R32F, EK_MAX_MATERIALS slots at most
 layout(binding = 1) uniform sampler3D lightTex;  // RGBA32F, one volume per light
 layout(binding = 2) uniform sampler3D gradientTex;  // RGBA32F: xyz = ∇n, w = n (curved rays)
+// Unit 3 is the photon pass's octree. The smoothed photon volumes (render/photon_radiance.h):
+layout(binding = 4) uniform sampler3D photonRadianceTex;   // RGBA32F: rgb = Σ flux·length
+layout(binding = 5) uniform sampler3D photonDirectionTex;  // RGBA32F: xyz = Σ weighted direction
 
 ivec3 stackedVoxel(int slot, ivec3 voxel) {
     return ivec3(voxel.x, voxel.y, voxel.z + slot * params.resolution.z);
@@ -19,6 +22,8 @@ ivec3 stackedVoxel(int slot, ivec3 voxel) {
 vec4 fetchVolume(int slot, ivec3 voxel) {
     if (slot < EK_MAX_MATERIALS) return texelFetch(fieldTex, stackedVoxel(slot, voxel), 0);
     if (slot == EK_GRADIENT_SLOT) return texelFetch(gradientTex, voxel, 0);
+    if (slot == EK_PHOTON_RADIANCE_SLOT) return texelFetch(photonRadianceTex, voxel, 0);
+    if (slot == EK_PHOTON_DIRECTION_SLOT) return texelFetch(photonDirectionTex, voxel, 0);
     return texelFetch(lightTex, stackedVoxel(slot - EK_MAX_MATERIALS, voxel), 0);
 }
 
@@ -36,6 +41,8 @@ vec4 filterStacked(sampler3D tex, int slot, vec3 indexPos) {
 vec4 filterVolume(int slot, vec3 indexPos) {
     if (slot < EK_MAX_MATERIALS) return filterStacked(fieldTex, slot, indexPos);
     if (slot == EK_GRADIENT_SLOT) return filterStacked(gradientTex, 0, indexPos);
+    if (slot == EK_PHOTON_RADIANCE_SLOT) return filterStacked(photonRadianceTex, 0, indexPos);
+    if (slot == EK_PHOTON_DIRECTION_SLOT) return filterStacked(photonDirectionTex, 0, indexPos);
     return filterStacked(lightTex, slot - EK_MAX_MATERIALS, indexPos);
 }
 #endif

@@ -21,6 +21,10 @@ EK_NAMESPACE_BEGIN
 
 // fetchVolume slots after the fields (0..) and the light volumes: the ∇n volume (xyz = ∇n, w = n).
 #define EK_GRADIENT_SLOT (EK_MAX_MATERIALS + EK_MAX_LIGHTS)
+// The smoothed photon volumes (render/photon_radiance.h): rgb = Σ flux·length per voxel (power ×
+// scene units), and xyz = the luminance-weighted sum of the directions the light travels.
+#define EK_PHOTON_RADIANCE_SLOT (EK_GRADIENT_SLOT + 1)
+#define EK_PHOTON_DIRECTION_SLOT (EK_GRADIENT_SLOT + 2)
 
 // One material: optics per unit of its field's value (see core/scene.h).
 struct GpuMaterial {
@@ -47,7 +51,10 @@ struct GpuViewParams {
     ivec4 resolution;    // xyz voxels; w: material count
     ivec4 image;         // x, y: pixels; z: light count; w: EK_SHADOWS_*
     vec4 background;     // rgb radiance; w: minimum transmittance before a ray stops
-    ivec4 pipeline;      // x: 1 = curved view rays through the ∇n volume, 0 = straight; yzw: 0
+    ivec4 pipeline;      // x: 1 = curved view rays through the ∇n volume, 0 = straight;
+                         // y: 1 = in-scattering read from the photon volumes;
+                         // z: bit l set = light l's light reaches the medium through the photon
+                         //    volumes (not through its light volume); w: 0
     GpuMaterial materials[EK_MAX_MATERIALS];
     GpuLight lights[EK_MAX_LIGHTS];
 };

@@ -1,10 +1,31 @@
-// The viewing pass: emission, absorption and single scattering of every light with
-// its transmittance (shadowing) taken from the light volume (light_volume.h) or, as reference,
-// marched toward the light from every sample (like vdb_render). Needs optics.h.
+// The viewing pass: emission, absorption and single scattering of every light. A light's light
+// reaches the medium through the smoothed photon volumes (params.pipeline.z; light bent and
+// focused by refraction) or straight, with its transmittance (shadowing) taken from the light
+// volume (light_volume.h) or, as reference, marched toward the light from every sample (like
+// vdb_render). Needs optics.h.
 
 // Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0.
 float stepWeight(float kappa, float s) {
     return kappa * s > 1e-5f ? (1.0f - exp(-kappa * s)) / kappa : s * (1.0f - 0.5f * kappa * s);
+}
+
+// Light scattered toward the camera (along −dir) at volume index position p from the smoothed
+// photon volumes (Sun et al. 2008 §5.4): the fluence rate φ = Σ flux·length / voxel volume, and
+// one phase function per material around the stored mean direction the light travels. Where the
+// photons' directions cancel (light crossing from opposite sides) the mean says nothing: the
+// phase function falls back to isotropic, 1/4π.
+vec3 photonInScattering(vec3 p, vec3 dir, vec3 sigma[EK_MAX_MATERIALS]) {
+    const vec3 h = volumeVoxelSize();
+    const vec3 fluence = vec3(sampleVolume(EK_PHOTON_RADIANCE_SLOT, p)) / (h.x * h.y * h.z);
+    const vec3 weightedDir = vec3(sampleVolume(EK_PHOTON_DIRECTION_SLOT, p));
+    const float len = length(weightedDir);
+    const bool directed = len > 1e-20f;
+    const float cosTheta = directed ? dot(weightedDir / len, -dir) : 0.0f;
+    vec3 scattered = vec3(0.0f);
+    for (int m = 0; m < params.resolution.w; ++m)
+        scattered += sigma[m] * (directed ? phaseHG(params.materials[m].absorption.w, cosTheta)
+                                          : 1.0f / (4.0f * EK_PI));
+    return scattered * fluence;
 }
 
 // Radiance reaching the camera along a ray, and the ray's transmittance through the volume.
@@ -25,8 +46,10 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
         source += field * vec3(params.materials[m].emission);
         scatters = scatters || sigma[m].x + sigma[m].y + sigma[m].z > 0.0f;
     }
+    if (scatters && params.pipeline.y != 0) source += photonInScattering(p, dir, sigma);
     if (scatters) {
         for (int l = 0; l < params.image.z; ++l) {
+            if ((params.pipeline.z & (1 << l)) != 0) continue;  // in the photon volumes
             vec3 toLight;
             float lightDistance;
             const vec3 irradiance = lightIrradiance(l, x, toLight, lightDistance);

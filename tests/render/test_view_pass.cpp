@@ -18,6 +18,7 @@
 #include "core/vdb_import.h"
 #include "render/frame_renderer.h"
 #include "render/image.h"
+#include "support/scene_builders.h"
 #include "support/test_paths.h"
 
 // Names brought in one by one: this file's helpers must not collide with the library's.
@@ -32,7 +33,13 @@ using eikon::Scene;
 using eikon::ShadowMode;
 using eikon::SourceSpec;
 using eikon::SourceType;
+using eikon::test::boxSource;
+using eikon::test::cameraAt;
+using eikon::test::directionalLight;
+using eikon::test::material;
 using eikon::test::scratchDir;
+using eikon::test::setVolume;
+using eikon::test::sphereSource;
 
 namespace {
 
@@ -43,72 +50,6 @@ const char* backendName(Backend b) {
 }
 const char* shadowName(ShadowMode m) {
     return m == ShadowMode::Volume ? "volume" : m == ShadowMode::Swept ? "swept" : "marched";
-}
-
-SourceSpec boxSource(const std::string& field, glm::vec3 lo, glm::vec3 hi, float value,
-                     float falloff = 0.0f, float voxel = 0.05f) {
-    SourceSpec s;
-    s.type = SourceType::Box;
-    s.field = field;
-    s.boxMin = lo;
-    s.boxMax = hi;
-    s.value = value;
-    s.falloff = falloff;
-    s.voxelSize = voxel;
-    return s;
-}
-
-SourceSpec sphereSource(const std::string& field, glm::vec3 center, float radius, float value,
-                        float falloff, float voxel = 0.05f) {
-    SourceSpec s;
-    s.type = SourceType::Sphere;
-    s.field = field;
-    s.center = center;
-    s.radius = radius;
-    s.value = value;
-    s.falloff = falloff;
-    s.voxelSize = voxel;
-    return s;
-}
-
-MaterialSpec material(const std::string& name, const std::string& field, glm::vec3 absorption,
-                      glm::vec3 scattering = glm::vec3(0.0f), float g = 0.0f,
-                      glm::vec3 emission = glm::vec3(0.0f)) {
-    MaterialSpec m;
-    m.name = name;
-    m.field = field;
-    m.absorption = absorption;
-    m.scattering = scattering;
-    m.g = g;
-    m.emission = emission;
-    return m;
-}
-
-LightSpec directionalLight(glm::vec3 direction, float intensity, glm::vec3 color = glm::vec3(1)) {
-    LightSpec l;
-    l.type = LightType::Directional;
-    l.direction = glm::normalize(direction);
-    l.intensity = intensity;
-    l.color = color;
-    return l;
-}
-
-CameraSpec cameraAt(glm::vec3 position, glm::vec3 lookAt, float fovDeg = 45.0f) {
-    CameraSpec c;
-    c.automatic = false;
-    c.position = position;
-    c.lookAt = lookAt;
-    c.up = glm::vec3(0, 1, 0);
-    c.horizontalFovDeg = fovDeg;
-    return c;
-}
-
-void setVolume(Scene& scene, glm::vec3 lo, glm::vec3 hi, glm::ivec3 resolution) {
-    scene.volume.autoBounds = false;
-    scene.volume.bounds.min = lo;
-    scene.volume.bounds.max = hi;
-    scene.volume.autoResolution = false;
-    scene.volume.resolution = resolution;
 }
 
 // Box [-1, 1]^3 of density 1 on a 0.05 grid, absorbing kappa per unit (grey), in front of a white

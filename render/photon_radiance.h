@@ -1,0 +1,81 @@
+#pragma once
+// The photon radiance stage (Sun et al. 2008 steps 4-6): photons traced from the lights along
+// curved paths (render/photon_tracing.h), their fixed-point deposits turned into float volumes,
+// both smoothed (render/smoothing.h). The viewing pass reads the result through
+// EK_PHOTON_RADIANCE_SLOT and EK_PHOTON_DIRECTION_SLOT (shaders/shared/view_march.h).
+//
+// It reruns only when its inputs change (render/frame_renderer.cpp): lights, extinction, n, the
+// volume or the photon settings; a camera move reuses the volumes and traces nothing.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "core/dense_grid.h"
+#include "core/scene.h"
+#include "render/photon_tracing.h"
+#include "render/refraction_volume.h"
+#include "render/view_params.h"
+
+namespace eikon {
+
+class GpuStageTimer;
+class PhotonTracerGpu;
+class ShaderProgram;
+class VolumeSmootherGpu;
+class VolumeTextures;
+
+// The scene's photon settings. The jitter depends on the seed, not on the frame: a light and
+// medium that stay still keep their photons, so noise does not flicker in an animation, and a
+// frame change alone traces nothing.
+PhotonSettings photonSettingsFor(const Scene& scene);
+
+struct PhotonRadianceCpu {
+    std::vector<glm::vec4> radiance;   // smoothed; rgb = Σ flux·length (see photon_tracing.h)
+    std::vector<glm::vec4> direction;  // smoothed; xyz = Σ luminance-weighted direction
+    PhotonTotals totals;
+    int64_t steps = 0;          // photon steps taken by the trace
+    int64_t photonsTraced = 0;  // photons that entered the box
+};
+
+// CPU twin: traceLightPhotonsCpu, then smoothVolumeCpu of both volumes.
+PhotonRadianceCpu computePhotonRadianceCpu(const ViewSetup& setup,
+                                           const std::vector<const DenseGrid*>& slotGrids,
+                                           const RefractionVolumeCpu& gradient,
+                                           const RefractionVolumeCpu& octree,
+                                           const PhotonSettings& settings);
+
+class PhotonRadianceGpu {
+public:
+    // exactMath: see PhotonTracerGpu (bit-identical to the CPU twin on llvmpipe).
+    explicit PhotonRadianceGpu(bool exactMath);
+    ~PhotonRadianceGpu();
+    PhotonRadianceGpu(const PhotonRadianceGpu&) = delete;
+    PhotonRadianceGpu& operator=(const PhotonRadianceGpu&) = delete;
+
+    // Traces, resolves and smooths. The field textures are uploaded, the ∇n and octree volumes
+    // computed, the params SSBO bound at binding 0. Timer stages: "photons", "smooth".
+    void compute(const ViewSetup& setup, VolumeTextures& fields,
+                 const RefractionVolumesGpu& refraction, const PhotonSettings& settings,
+                 GpuStageTimer* timer);
+    // Binds the smoothed radiance and direction volumes to texture units 4 and 5
+    // (shaders/volume_bindings.glsl).
+    void bind() const;
+    // Photon steps of the last compute (read back: 8 bytes).
+    int64_t lastSteps() const;
+    // The smoothed volumes and the trace's totals, for tests.
+    PhotonRadianceCpu download() const;
+
+private:
+    void allocate(glm::ivec3 resolution);
+
+    std::unique_ptr<PhotonTracerGpu> tracer_;
+    std::unique_ptr<VolumeSmootherGpu> smoother_;
+    std::unique_ptr<ShaderProgram> resolve_;
+    unsigned raw_[2] = {0, 0};       // radiance, direction before smoothing
+    unsigned smoothed_[2] = {0, 0};  // after
+    glm::ivec3 resolution_{0};
+};
+
+}  // namespace eikon

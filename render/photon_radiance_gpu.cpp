@@ -1,0 +1,113 @@
+#include <epoxy/gl.h>
+
+#include "core/error.h"
+#include "render/gpu_timer.h"
+#include "render/photon_radiance.h"
+#include "render/photon_tracing_gpu.h"
+#include "render/shader_program.h"
+#include "render/smoothing.h"
+#include "render/volume_textures.h"
+
+namespace eikon {
+
+namespace {
+
+constexpr GLuint kDepositBinding = 5;  // shaders/photon_resolve.comp
+constexpr GLuint kRadianceUnit = 4;    // shaders/volume_bindings.glsl
+constexpr GLuint kDirectionUnit = 5;
+
+std::vector<glm::vec4> downloadVolume(unsigned texture, glm::ivec3 res) {
+    std::vector<glm::vec4> out(size_t(res.x) * size_t(res.y) * size_t(res.z));
+    glBindTexture(GL_TEXTURE_3D, texture);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, out.data());
+    glBindTexture(GL_TEXTURE_3D, 0);
+    return out;
+}
+
+}  // namespace
+
+PhotonRadianceGpu::PhotonRadianceGpu(bool exactMath)
+    : tracer_(std::make_unique<PhotonTracerGpu>(exactMath)),
+      smoother_(std::make_unique<VolumeSmootherGpu>()),
+      resolve_(std::make_unique<ShaderProgram>(ShaderProgram::compute("photon_resolve.comp"))) {}
+
+PhotonRadianceGpu::~PhotonRadianceGpu() {
+    glDeleteTextures(2, raw_);
+    glDeleteTextures(2, smoothed_);
+}
+
+void PhotonRadianceGpu::allocate(glm::ivec3 res) {
+    if (raw_[0] && res == resolution_) return;
+    glDeleteTextures(2, raw_);
+    glDeleteTextures(2, smoothed_);
+    glGenTextures(2, raw_);
+    glGenTextures(2, smoothed_);
+    for (unsigned* t : {&raw_[0], &raw_[1], &smoothed_[0], &smoothed_[1]}) {
+        glBindTexture(GL_TEXTURE_3D, *t);
+        glTexStorage3D(GL_TEXTURE_3D, 1, GL_RGBA32F, res.x, res.y, res.z);
+        setVolumeSampling();
+    }
+    glBindTexture(GL_TEXTURE_3D, 0);
+    if (glGetError() != GL_NO_ERROR)
+        throw Error("photon radiance", "the driver refused four RGBA32F volumes of " +
+                                           std::to_string(res.x) + "x" + std::to_string(res.y) +
+                                           "x" + std::to_string(res.z));
+    resolution_ = res;
+}
+
+void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
+                                const RefractionVolumesGpu& refraction,
+                                const PhotonSettings& settings, GpuStageTimer* timer) {
+    const shared::GpuViewParams& p = setup.params;
+    const glm::ivec3 res(p.resolution.x, p.resolution.y, p.resolution.z);
+    allocate(res);
+    tracer_->trace(setup, fields, refraction, settings, timer);
+
+    if (timer) timer->begin("smooth");
+    // Neither volume may stay bound for sampling while images write it.
+    for (GLuint unit : {kRadianceUnit, kDirectionUnit}) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        glBindTexture(GL_TEXTURE_3D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    resolve_->use();
+    resolve_->setIVec3("resolution", res);
+    const glm::dvec4& s = tracer_->fixedPointScale();
+    glUniform4d(resolve_->uniformLocation("depositScale"), s.x, s.y, s.z, s.w);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepositBinding, tracer_->depositBuffer());
+    glBindImageTexture(1, raw_[0], 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(2, raw_[1], 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(GLuint((res.x + 3) / 4), GLuint((res.y + 3) / 4), GLuint((res.z + 3) / 4));
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    smoother_->smooth(raw_[0], smoothed_[0], res);
+    smoother_->smooth(raw_[1], smoothed_[1], res);
+    if (timer) timer->end();
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR)
+        throw Error("photon radiance", "OpenGL error " + std::to_string(err));
+}
+
+void PhotonRadianceGpu::bind() const {
+    glActiveTexture(GL_TEXTURE0 + kRadianceUnit);
+    glBindTexture(GL_TEXTURE_3D, smoothed_[0]);
+    glActiveTexture(GL_TEXTURE0 + kDirectionUnit);
+    glBindTexture(GL_TEXTURE_3D, smoothed_[1]);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+int64_t PhotonRadianceGpu::lastSteps() const {
+    return tracer_->stepsTaken();
+}
+
+PhotonRadianceCpu PhotonRadianceGpu::download() const {
+    const PhotonResultCpu traced = tracer_->download();
+    PhotonRadianceCpu out;
+    out.radiance = downloadVolume(smoothed_[0], resolution_);
+    out.direction = downloadVolume(smoothed_[1], resolution_);
+    out.totals = traced.totals;
+    out.steps = traced.steps;
+    out.photonsTraced = traced.photonsTraced;
+    return out;
+}
+
+}  // namespace eikon
