@@ -95,7 +95,7 @@ int runRender(const RenderOptions& o) {
         const auto t0 = std::chrono::steady_clock::now();
         if (scene.output.png) {
             const std::string path = framePath(scene, frame, "png");
-            writePng(path, image, scene.render.exposure);
+            writePng(path, image, scene.render.exposure, scene.render.toneCurve);
             std::printf("wrote %s\n", path.c_str());
         }
         if (scene.output.exr) {

@@ -127,7 +127,7 @@ int runView(const ViewOptions& o) {
             dirty = false;
         }
         const auto fb = window.framebufferSize();
-        display.draw(image, exposure, fb.width, fb.height);
+        display.draw(image, exposure, scene.render.toneCurve, fb.width, fb.height);
         const bool last = o.exitAfter > 0 && rendered >= o.exitAfter;
         if ((last || keys.pressed(GLFW_KEY_P)) && (!o.screenshot.empty() || !last)) {
             const std::string path = o.screenshot.empty() ? "eikon_view.png" : o.screenshot;

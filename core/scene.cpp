@@ -436,6 +436,10 @@ RenderSettings readRender(const Value& value) {
         render.minTransmittance = cutoff->floatNumber(Range::closedOpen(0.0, 1.0));
     }
     if (auto exposure = object.optional("exposure")) render.exposure = exposure->floatNumber();
+    if (auto curve = object.optional("tone_map")) {
+        render.toneCurve =
+            curve->choice({"filmic", "linear"}) == "filmic" ? ToneCurve::Filmic : ToneCurve::Linear;
+    }
     if (auto shadows = object.optional("shadows")) {
         const std::string mode = shadows->choice({"volume", "swept", "marched"});
         render.shadows = mode == "volume"  ? ShadowMode::Volume

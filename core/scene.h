@@ -107,6 +107,10 @@ struct PhotonRenderSettings {
     float fluxThreshold = 1e-4f;  // a photon is dropped below this fraction of its initial flux
 };
 
+// The curve between exposure and the sRGB encoding of PNG output and the viewer
+// (shaders/shared/tone_map.h). EXR output stays linear.
+enum class ToneCurve { Linear, Filmic };
+
 struct RenderSettings {
     int width = 640;
     int height = 480;
@@ -114,6 +118,7 @@ struct RenderSettings {
     float shadowStepVoxels = 3.0f;           // step toward the light
     float minTransmittance = 1e-3f;          // a view ray stops when every channel is below this
     float exposure = 0.0f;                   // stops; the tone map multiplies by 2^exposure
+    ToneCurve toneCurve = ToneCurve::Filmic;
     ShadowMode shadows = ShadowMode::Swept;  // fastest, and most accurate at default steps
                                              // on smoke (BENCHMARKS.md)
     std::uint32_t seed = 0;

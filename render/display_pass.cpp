@@ -21,7 +21,8 @@ DisplayPass::~DisplayPass() {
     if (vertexArray_) glDeleteVertexArrays(1, &vertexArray_);
 }
 
-void DisplayPass::draw(const Image& image, float exposureStops, int width, int height) {
+void DisplayPass::draw(const Image& image, float exposureStops, ToneCurve curve, int width,
+                       int height) {
     if (!texture_ || image.width != textureWidth_ || image.height != textureHeight_) {
         if (texture_) glDeleteTextures(1, &texture_);
         glGenTextures(1, &texture_);
@@ -44,6 +45,7 @@ void DisplayPass::draw(const Image& image, float exposureStops, int width, int h
     glDisable(GL_DEPTH_TEST);
     program_->use();
     program_->setFloat("exposureScale", std::exp2(exposureStops));
+    program_->setInt("toneCurve", curve == ToneCurve::Filmic ? 1 : 0);  // EK_TONE_*
     glBindVertexArray(vertexArray_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);

@@ -18,7 +18,7 @@ public:
     DisplayPass& operator=(const DisplayPass&) = delete;
 
     // Draws `image` scaled to the viewport (width x height pixels).
-    void draw(const Image& image, float exposureStops, int width, int height);
+    void draw(const Image& image, float exposureStops, ToneCurve curve, int width, int height);
     // The window's pixels, 8-bit RGB, row 0 at the top.
     std::vector<unsigned char> readPixels(int width, int height) const;
 

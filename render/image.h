@@ -8,6 +8,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "core/scene.h"
+
 namespace eikon {
 
 struct Image {
@@ -23,10 +25,13 @@ struct Image {
     }
 };
 
-// Exposure (2^stops), then the sRGB transfer curve, clamped to [0, 1] and rounded to 8 bits.
-std::vector<unsigned char> toneMapToSrgb8(const Image& image, float exposureStops);
+// Exposure (2^stops), the curve, then the sRGB transfer function, rounded to 8 bits
+// (shaders/shared/tone_map.h, which the viewer's display shader shares).
+std::vector<unsigned char> toneMapToSrgb8(const Image& image, float exposureStops,
+                                          ToneCurve curve = ToneCurve::Filmic);
 
-void writePng(const std::string& path, const Image& image, float exposureStops);
+void writePng(const std::string& path, const Image& image, float exposureStops,
+              ToneCurve curve = ToneCurve::Filmic);
 // 8-bit sRGB RGB rows, row 0 at the top (what toneMapToSrgb8 returns, or a window's pixels).
 void writePngRgb8(const std::string& path, int width, int height,
                   const std::vector<unsigned char>& rgb);

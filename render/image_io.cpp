@@ -12,14 +12,14 @@
 #include "core/error.h"
 #include "render/image.h"
 
+#include "shaders/shared/platform.h"
+
+EK_NAMESPACE_BEGIN
+#include "shaders/shared/tone_map.h"
+EK_NAMESPACE_END
+
 namespace eikon {
 namespace {
-
-float srgbEncode(float linear) {
-    if (!(linear > 0.0f)) return 0.0f;  // also maps NaN to black
-    if (linear >= 1.0f) return 1.0f;
-    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
-}
 
 void writePngFile(const std::string& file, const std::string& nameForErrors, int width, int height,
                   const std::vector<unsigned char>& rgb) {
@@ -45,18 +45,20 @@ void writePngFile(const std::string& file, const std::string& nameForErrors, int
 
 }  // namespace
 
-std::vector<unsigned char> toneMapToSrgb8(const Image& image, float exposureStops) {
+std::vector<unsigned char> toneMapToSrgb8(const Image& image, float exposureStops,
+                                          ToneCurve curve) {
     const float scale = std::exp2(exposureStops);
+    const int code = curve == ToneCurve::Filmic ? EK_TONE_FILMIC : EK_TONE_LINEAR;
     std::vector<unsigned char> out(image.pixels.size() * 3);
     for (size_t i = 0; i < image.pixels.size(); ++i)
         for (int c = 0; c < 3; ++c)
-            out[i * 3 + size_t(c)] =
-                (unsigned char)std::lround(255.0f * srgbEncode(scale * image.pixels[i][c]));
+            out[i * 3 + size_t(c)] = (unsigned char)std::lround(
+                255.0f * shared::toneMapChannel(image.pixels[i][c], scale, code));
     return out;
 }
 
-void writePng(const std::string& path, const Image& image, float exposureStops) {
-    writePngRgb8(path, image.width, image.height, toneMapToSrgb8(image, exposureStops));
+void writePng(const std::string& path, const Image& image, float exposureStops, ToneCurve curve) {
+    writePngRgb8(path, image.width, image.height, toneMapToSrgb8(image, exposureStops, curve));
 }
 
 void writePngRgb8(const std::string& path, int width, int height,
