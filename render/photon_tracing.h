@@ -2,9 +2,14 @@
 // Photon tracing, steps 4 and 5 of Sun et al. 2008 (docs: shaders/shared/photons.h): the CPU twin,
 // parallel over photons with TBB; the GPU port runs the same shared functions.
 //
+// Every light is traced: directional lights of irradiance E (power per area) send photons of
+// flux E × cell area, point and spot lights of intensity I (power per steradian) photons of flux
+// I × the cell's solid angle (× the spot falloff); see the units in shaders/shared/photons.h.
+//
 // Radiance volume (x fastest, like DenseGrid): rgb = Σ flux·length per voxel, in power × scene
-// units (divide by the voxel's volume for the fluence rate); direction volume: xyz = Σ luminance
-// of that flux·length × the segment's unit direction.
+// units (divide by the voxel's volume for the fluence rate, power per area: I/r² from a point
+// light in a clear medium); direction volume: xyz = Σ luminance of that flux·length × the
+// segment's unit direction.
 //
 // Determinism: deposits are summed as 64-bit integers, so the order of additions does not matter
 // and any thread count gives the same bits. A deposit q becomes llround(q · scale) with, per
@@ -33,7 +38,7 @@ EK_NAMESPACE_END
 namespace eikon {
 
 struct PhotonSettings {
-    int photonsPerSide = 128;     // N: N×N photons per light over the box's light-space rectangle
+    int photonsPerSide = 128;     // N: N×N photons per light-space grid (PhotonLightPlan)
     float minStepVoxels = 1.0f;   // Δs_min, in voxels of the smallest edge
     float fluxThreshold = 1e-4f;  // drop a photon below this fraction of its initial flux
     int maxSteps = 0;             // per photon; 0: 16 crossings of the volume at Δs_min
@@ -41,7 +46,7 @@ struct PhotonSettings {
     int frame = 0;
 };
 
-// Per colour channel, in power (the light's irradiance × area).
+// Per colour channel, in power (irradiance × area, or intensity × solid angle).
 struct PhotonTotals {
     glm::dvec3 emitted{0.0};       // Σ initial flux of the photons that entered the box
     glm::dvec3 escaped{0.0};       // flux carried out through the box's faces
@@ -58,24 +63,34 @@ struct PhotonResultCpu {
     int64_t steps = 0;                // photon steps taken, all photons
     int64_t photonsTraced = 0;        // photons that entered the box
     int64_t photonsCut = 0;           // still active at maxSteps (their flux counts as dropped)
-    int skippedLights = 0;            // point and spot lights: not traced yet
     // Every photon's final state, light after light, index order: for escaped photons the exit
     // point and the direction v they leave with (shared::GpuPhoton, EK_PHOTON_* in position.w).
     std::vector<shared::GpuPhoton> photons;
+};
+
+// One light's photons: photons[first .. first + count) of the photon list, in the layout
+// `grid` (EK_PHOTON_GRID_*: one N×N grid, six for a light in or beside the box, none for a spot
+// whose cone misses the box).
+struct PhotonLightPlan {
+    int light = 0;  // index in ViewParams.lights
+    int grid = EK_PHOTON_GRID_NONE;
+    size_t first = 0;
+    size_t count = 0;  // photonGridFaces(grid) · side²
 };
 
 // What the settings mean for a given volume, derived once for both backends.
 struct PhotonPlan {
     glm::ivec3 resolution{0};
     size_t voxels = 0;
-    int side = 1;          // photons per side of a light's grid
-    size_t perLight = 1;   // side²
-    float minStep = 0.0f;  // Δs_min in scene units
-    int maxSteps = 0;      // per photon
+    int side = 1;                         // photons per side of a light-space grid
+    std::vector<PhotonLightPlan> lights;  // every light, in order
+    size_t photons = 0;                   // all lights' photons
+    float minStep = 0.0f;                 // Δs_min in scene units
+    int maxSteps = 0;                     // per photon
 };
 PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings);
 
-// Traces N² photons from every directional light of setup through the media: slotGrids are the
+// Traces the photons of every light of setup (PhotonPlan) through the media: slotGrids are the
 // field volumes (as for computeIndexGradientCpu), gradient and octree the refraction volumes.
 PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
                                      const std::vector<const DenseGrid*>& slotGrids,

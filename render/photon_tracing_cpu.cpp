@@ -72,7 +72,19 @@ PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings) {
     const glm::ivec3 res = plan.resolution;
     plan.voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
     plan.side = std::max(settings.photonsPerSide, 1);
-    plan.perLight = size_t(plan.side) * size_t(plan.side);
+    // The layouts come from the shared code, run here once: the GPU is told them rather than
+    // deciding again, so that a last-bit difference can never change a photon count.
+    shared::PhotonKernelCpu kernel{{setup.params}};
+    const size_t perGrid = size_t(plan.side) * size_t(plan.side);
+    for (int l = 0; l < setup.params.image.z; ++l) {
+        PhotonLightPlan light;
+        light.light = l;
+        light.grid = kernel.photonGrid(l);
+        light.first = plan.photons;
+        light.count = size_t(kernel.photonGridFaces(light.grid)) * perGrid;
+        plan.photons += light.count;
+        plan.lights.push_back(light);
+    }
     plan.minStep = octreeStepInScene(setup, settings.minStepVoxels);
     // By default a photon may cross the volume 16 times at the minimum step (a trapped path).
     plan.maxSteps = settings.maxSteps > 0 ? settings.maxSteps
@@ -93,32 +105,24 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
 
     PhotonResultCpu result;
     const PhotonPlan plan = planPhotons(setup, settings);
-    const glm::ivec3 res = plan.resolution;
-    result.resolution = res;
+    result.resolution = plan.resolution;
     const size_t voxels = plan.voxels;
-    const int side = plan.side;
-    const size_t perLight = plan.perLight;
     const float minStep = plan.minStep;
     const int maxSteps = plan.maxSteps;
 
     // Step 4: generate every light's photons; the emitted power, summed in index order, sets the
     // fixed-point scales before anything is deposited.
-    std::vector<int> traced;  // lights generated, in order
-    for (int l = 0; l < setup.params.image.z; ++l) {
-        if (int(setup.params.lights[l].position.w) == EK_LIGHT_DIRECTIONAL)
-            traced.push_back(l);
-        else
-            ++result.skippedLights;
+    result.photons.resize(plan.photons);
+    for (const PhotonLightPlan& light : plan.lights) {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, light.count, 256),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              for (size_t i = r.begin(); i != r.end(); ++i)
+                                  result.photons[light.first + i] = kernel.generatePhoton(
+                                      light.light, light.grid, plan.side, int(i),
+                                      glm::uint(settings.seed), glm::uint(settings.frame),
+                                      settings.fluxThreshold);
+                          });
     }
-    result.photons.resize(traced.size() * perLight);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, result.photons.size(), 256),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                          for (size_t i = r.begin(); i != r.end(); ++i)
-                              result.photons[i] = kernel.generateDirectionalPhoton(
-                                  traced[i / perLight], side, int(i % perLight),
-                                  glm::uint(settings.seed), glm::uint(settings.frame),
-                                  settings.fluxThreshold);
-                      });
     for (const shared::GpuPhoton& p : result.photons) {
         if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
         result.totals.emitted += glm::dvec3(glm::vec3(p.flux));

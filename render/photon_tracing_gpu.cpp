@@ -72,6 +72,19 @@ std::vector<T> readBuffer(GLuint buffer, size_t count) {
     return out;
 }
 
+// Runs `program` over photons [0, count) of its range in dispatches the driver must accept (GL
+// promises 65535 work groups in x, fewer than a cube layout of N = 1024 needs): each dispatch
+// covers photonCount photons from photonFirst.
+void dispatchPhotons(const ShaderProgram& program, size_t count) {
+    const size_t perDispatch = size_t(65535) * kLocalSize;
+    for (size_t first = 0; first < count; first += perDispatch) {
+        const size_t n = std::min(count - first, perDispatch);
+        program.setInt("photonFirst", int(first));
+        program.setInt("photonCount", int(n));
+        glDispatchCompute(GLuint((n + kLocalSize - 1) / kLocalSize), 1, 1);
+    }
+}
+
 }  // namespace
 
 PhotonTracerGpu::PhotonTracerGpu(bool exactMath) {
@@ -96,21 +109,9 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     // The same derived settings as traceLightPhotonsCpu.
     PhotonResultCpu host;
     const PhotonPlan plan = planPhotons(setup, settings);
-    const glm::ivec3 res = plan.resolution;
-    host.resolution = res;
+    host.resolution = plan.resolution;
     const size_t voxels = plan.voxels;
-    const int side = plan.side;
-    const size_t perLight = plan.perLight;
-    const float minStep = plan.minStep;
-    const int maxSteps = plan.maxSteps;
-    std::vector<int> traced;
-    for (int l = 0; l < setup.params.image.z; ++l) {
-        if (int(setup.params.lights[l].position.w) == EK_LIGHT_DIRECTIONAL)
-            traced.push_back(l);
-        else
-            ++host.skippedLights;
-    }
-    const size_t photonCount = traced.size() * perLight;
+    const size_t photonCount = plan.photons;
     if (photonCount > photonCapacity_ || !photons_) {
         resizeBuffer(photons_, photonCount * sizeof(shared::GpuPhoton));
         photonCapacity_ = photonCount;
@@ -134,19 +135,18 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhotonBinding, photons_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepositBinding, deposits_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTotalsBinding, totals_);
-    const GLuint groups = GLuint((perLight + kLocalSize - 1) / kLocalSize);
 
-    // Step 4: generate every light's photons.
+    // Step 4: generate every light's photons, in the layouts the plan chose on the host.
     generate_->use();
-    generate_->setInt("photonsPerSide", side);
-    generate_->setInt("photonCount", int(perLight));
+    generate_->setInt("photonsPerSide", plan.side);
     generate_->setUint("seed", settings.seed);
     generate_->setUint("frame", glm::uint(settings.frame));
     generate_->setFloat("fluxThreshold", settings.fluxThreshold);
-    for (size_t t = 0; t < traced.size(); ++t) {
-        generate_->setInt("lightIndex", traced[t]);
-        generate_->setInt("photonOffset", int(t * perLight));
-        glDispatchCompute(groups, 1, 1);
+    for (const PhotonLightPlan& light : plan.lights) {
+        generate_->setInt("lightIndex", light.light);
+        generate_->setInt("lightGrid", light.grid);
+        generate_->setInt("photonOffset", int(light.first));
+        dispatchPhotons(*generate_, light.count);
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 
@@ -174,16 +174,12 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     clearBuffer(totals_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     trace_->use();
-    trace_->setInt("photonCount", int(perLight));
-    trace_->setFloat("minStep", minStep);
-    trace_->setInt("maxSteps", maxSteps);
+    trace_->setFloat("minStep", plan.minStep);
+    trace_->setInt("maxSteps", plan.maxSteps);
     const glm::dvec4& s = host.fixedPointScale;
     glUniform4d(trace_->uniformLocation("depositScale"), s.x, s.y, s.z, s.w);
     glUniform3d(trace_->uniformLocation("totalScale"), totalScale.x, totalScale.y, totalScale.z);
-    for (size_t t = 0; t < traced.size(); ++t) {
-        trace_->setInt("photonOffset", int(t * perLight));
-        glDispatchCompute(groups, 1, 1);
-    }
+    dispatchPhotons(*trace_, photonCount);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     if (timer) timer->end();
 

@@ -14,15 +14,15 @@ class VolumeTextures;
 
 class PhotonTracerGpu {
 public:
-    // Needs a current context. exactMath: the CPU twin's rounding for dot, length, normalize, mix
-    // and exp (bit-identical results on llvmpipe; double-precision exp, slow on most hardware
-    // GPUs, which should pass false and compare with the twin within tolerances).
+    // Needs a current context. exactMath: the CPU twin's rounding for dot, length, normalize, mix,
+    // smoothstep and exp (bit-identical results on llvmpipe; double-precision exp, slow on most
+    // hardware GPUs, which should pass false and compare with the twin within tolerances).
     explicit PhotonTracerGpu(bool exactMath = true);
     ~PhotonTracerGpu();
     PhotonTracerGpu(const PhotonTracerGpu&) = delete;
     PhotonTracerGpu& operator=(const PhotonTracerGpu&) = delete;
 
-    // Generates and traces N² photons from every directional light of setup. fields are the
+    // Generates and traces the photons of every light of setup (planPhotons). fields are the
     // field volumes (already uploaded), refraction the ∇n and octree volumes already computed
     // from them, and the params SSBO is already bound at binding 0. Reads the generated photons
     // back once (the emitted power sets the fixed-point scales before anything is deposited, as

@@ -1,9 +1,10 @@
 #version 430 core
 // Photon tracing, steps 4 and 5 of Sun et al. 2008 (shaders/shared/photons.h), one invocation
-// per photon of one directional light (render/photon_tracing_gpu.cpp). Compiled twice:
-//  - with EK_PHOTON_GENERATE: generates the photons and writes their starting states. The host
-//    sums their flux to set the fixed-point scales before anything is deposited, exactly as the
-//    CPU twin (render/photon_tracing_cpu.cpp) does;
+// per photon (render/photon_tracing_gpu.cpp). Compiled twice:
+//  - with EK_PHOTON_GENERATE: generates one light's photons, in the layout the host chose
+//    (photonGrid, run once in the CPU twin's planPhotons), and writes their starting states.
+//    The host sums their flux to set the fixed-point scales before anything is deposited,
+//    exactly as the CPU twin (render/photon_tracing_cpu.cpp) does;
 //  - without: traces the generated photons, deposits every segment piece into the fixed-point
 //    radiance volume, and adds each photon's bookkeeping to the fixed-point totals.
 //
@@ -18,8 +19,8 @@ layout(local_size_x = 64) in;
 // slow on most of them) and are compared with the twin within tolerances. ----
 #ifdef EK_EXACT_MATH
 // The twin compiles the shared code against glm and glibc: glm's dot is (x·x + y·y) + z·z, its
-// length sqrt(dot), its normalize v · (1 / sqrt(dot)), its mix x·(1 − a) + y·a, and exp on a
-// float is glibc's expf. llvmpipe's dot, length and normalize differ from those in the last bit
+// length sqrt(dot), its normalize v · (1 / sqrt(dot)), its mix x·(1 − a) + y·a, its smoothstep
+// (the spot falloff) t·t·(3 − 2t), and exp on a float is glibc's expf. llvmpipe's dot, length and normalize differ from those in the last bit
 // for 10-30% of inputs, and its exp (a polynomial for exp2) for 70% (measured on Mesa 22.3); one
 // such bit moves a photon across a voxel face or an octree node sooner or later. So these names
 // are redefined below, before any shared file is included, as exactly those operation sequences.
@@ -43,6 +44,12 @@ vec3 ekNormalize(vec3 v) {
 }
 vec4 ekMix(vec4 x, vec4 y, float a) {
     precise vec4 r = x * (1.0f - a) + y * a;
+    return r;
+}
+// glm's smoothstep: t = clamp((x − e0) / (e1 − e0), 0, 1), t · t · (3 − 2t).
+float ekSmoothstep(float e0, float e1, float x) {
+    precise float t = clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+    precise float r = t * t * (3.0f - 2.0f * t);
     return r;
 }
 
@@ -106,6 +113,7 @@ vec3 ekExpf(vec3 x) {
 #define length ekLength
 #define normalize ekNormalize
 #define mix ekMix
+#define smoothstep ekSmoothstep
 #define exp ekExpf
 #endif
 // ----
@@ -120,8 +128,9 @@ void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir);
 
 // Texture unit 3: no other volume pass uses it (volume_bindings.glsl takes 0-2).
 layout(binding = 3) uniform sampler3D octreeTex;
-// Photons of all lights, light after light in the CPU twin's order; this dispatch covers
-// photons[photonOffset .. photonOffset + photonCount).
+// Photons of all lights, light after light in the CPU twin's order. A generating dispatch covers
+// photons photonFirst .. photonFirst + photonCount − 1 of light lightIndex, stored from
+// photons[photonOffset]; a tracing dispatch covers photons[photonFirst ..] of all lights.
 layout(std430, binding = 4) buffer PhotonBlock { GpuPhoton photons[]; };
 // Per voxel (x fastest) 6 int64 sums as (low, high) word pairs: r, g, b, then the weighted
 // direction x, y, z.
@@ -130,8 +139,10 @@ layout(std430, binding = 5) buffer DepositBlock { uint deposits[]; };
 layout(std430, binding = 6) buffer TotalsBlock { uint totals[]; };
 
 uniform int lightIndex;
+uniform int lightGrid;  // EK_PHOTON_GRID_*
 uniform int photonsPerSide;
 uniform int photonOffset;
+uniform int photonFirst;
 uniform int photonCount;
 uniform uint seed;
 uniform uint frame;
@@ -188,17 +199,17 @@ void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir) {
 }
 
 void main() {
-    const int i = int(gl_GlobalInvocationID.x);
-    if (i >= photonCount) return;
+    if (int(gl_GlobalInvocationID.x) >= photonCount) return;
+    const int i = photonFirst + int(gl_GlobalInvocationID.x);
 #ifdef EK_PHOTON_GENERATE
-    photons[photonOffset + i] =
-        generateDirectionalPhoton(lightIndex, photonsPerSide, i, seed, frame, fluxThreshold);
+    photons[photonOffset + i] = generatePhoton(lightIndex, lightGrid, photonsPerSide, i, seed,
+                                               frame, fluxThreshold);
 #else
-    GpuPhoton p = photons[photonOffset + i];
+    GpuPhoton p = photons[i];
     if (int(p.position.w) != EK_PHOTON_ACTIVE) return;
     vec3 extinguished = vec3(0.0f);
     tracePhoton(p, minStep, maxSteps, extinguished);
-    photons[photonOffset + i] = p;
+    photons[i] = p;
     // The CPU twin's per-photon bookkeeping: the flux left in the photon is escaped or dropped.
     const int state = int(p.position.w);
     const int leftAt = state == EK_PHOTON_ESCAPED ? 0 : 12;

@@ -17,19 +17,35 @@
 // beam) sends photons through an N×N grid of cells over the rectangle that the volume box
 // projects to on the plane perpendicular to the light; a photon carries flux E × cell area
 // (power). Cells whose jittered ray misses the box emit nothing, so the emitted power is
-// Σ_hit E·cellArea, whose expectation is E × the box's projected area. Deposits are flux·length
-// (power × scene units): every voxel a segment crosses receives ∫ flux ds over the part of the
-// segment inside it; divided by the voxel's volume that is the fluence rate (power per area).
+// Σ_hit E·cellArea, whose expectation is E × the box's projected area.
+// A point or spot light of radiant intensity I (GpuLight.radiance, power per steradian) sends
+// photons from its position through N×N grids on planes at unit distance from it (photonGrid):
+// one grid over the box's or the spot cone's projection when the light is well outside the box,
+// else the six faces of a cube around it (N² photons per face). A photon carries flux I × its
+// cell's solid angle × the spot falloff (power), so the emitted power's expectation is I × the
+// solid angle the box subtends (4π·I for a point light inside it), weighted by the falloff for
+// a spot; it starts where its ray enters the box, or at the light if that is inside.
+// Deposits are flux·length (power × scene units): every voxel a segment crosses receives
+// ∫ flux ds over the part of the segment inside it; divided by the voxel's volume that is the
+// fluence rate (power per area: E in a clear medium lit by a directional light, I/r² by a point
+// light).
 
 #ifndef EIKON_SHARED_PHOTON_TYPES_H
 #define EIKON_SHARED_PHOTON_TYPES_H
 
 // GpuPhoton.position.w: where a photon is in its life.
-#define EK_PHOTON_INACTIVE 0  // its cell's ray missed the box: it never existed
+#define EK_PHOTON_INACTIVE 0  // its ray missed the box or carried nothing: it never existed
 #define EK_PHOTON_ACTIVE 1
 #define EK_PHOTON_ESCAPED 2  // left the box; position and direction are its exit
 #define EK_PHOTON_DROPPED 3  // its flux fell below its threshold, or its march went degenerate
 #define EK_PHOTON_CUT 4      // still active after the step limit (a trapped path)
+
+// How a light's photons are laid out (photonGrid): N×N grids of cells, one photon per cell.
+#define EK_PHOTON_GRID_NONE 0      // a spot whose cone misses the box: no photons
+#define EK_PHOTON_GRID_PARALLEL 1  // directional: one grid over the box's projection
+#define EK_PHOTON_GRID_BOX 2       // point or spot: one perspective grid toward the box's centre
+#define EK_PHOTON_GRID_SPOT 3      // spot: one perspective grid along the spot's axis
+#define EK_PHOTON_GRID_CUBE 4      // point or spot in or beside the box: the six faces of a cube
 
 // One photon's state between steps; only vec4 members, so std430 and C++ offsets agree.
 struct GpuPhoton {
@@ -69,13 +85,18 @@ void lightPlaneBasis(vec3 d, EK_OUT(vec3) u, EK_OUT(vec3) w) {
     w = cross(d, u);
 }
 
+// Corner c (bit 0: x, bit 1: y, bit 2: z at the maximum) of the volume box.
+vec3 volumeCorner(int c) {
+    return vec3((c & 1) != 0 ? params.volumeMax.x : params.volumeMin.x,
+                (c & 2) != 0 ? params.volumeMax.y : params.volumeMin.y,
+                (c & 4) != 0 ? params.volumeMax.z : params.volumeMin.z);
+}
+
 // The rectangle the box projects to in the light plane: x, y = min (u, w); z, w = max.
 vec4 lightPlaneBounds(vec3 u, vec3 w) {
     vec4 r = vec4(3.0e38f, 3.0e38f, -3.0e38f, -3.0e38f);
     for (int c = 0; c < 8; ++c) {
-        const vec3 corner = vec3((c & 1) != 0 ? params.volumeMax.x : params.volumeMin.x,
-                                 (c & 2) != 0 ? params.volumeMax.y : params.volumeMin.y,
-                                 (c & 4) != 0 ? params.volumeMax.z : params.volumeMin.z);
+        const vec3 corner = volumeCorner(c);
         const float a = dot(corner, u);
         const float b = dot(corner, w);
         r = vec4(min(r.x, a), min(r.y, b), max(r.z, a), max(r.w, b));
@@ -83,47 +104,201 @@ vec4 lightPlaneBounds(vec3 u, vec3 w) {
     return r;
 }
 
-// Photon `index` (cell index % N, index / N of the N×N grid) of directional light l, placed
-// where its jittered ray enters the box. relativeThreshold sets flux.w, the flux below which the
-// photon is dropped, relative to the photon's largest initial channel. A photon whose ray misses
-// the box comes back EK_PHOTON_INACTIVE with zero flux. Other light types are not generated yet:
-// they come back inactive too.
-GpuPhoton generateDirectionalPhoton(int l, int photonsPerSide, int index, uint seed, uint frame,
-                                    float relativeThreshold) {
+// The jittered point of cell `cell` (column cell % N, row cell / N) of the N×N grid over rect,
+// from photon `index`'s two random numbers (hash dimensions 0 and 1); cellArea gets the area of
+// one cell. Jittered (stratified) sampling: one uniform point per cell, so a cell's photon is an
+// unbiased estimate of the cell's integral and the grid as a whole has little variance.
+vec2 jitteredCellPoint(vec4 rect, int photonsPerSide, int cell, int l, int index, uint seed,
+                       uint frame, EK_OUT(float) cellArea) {
+    const float cellU = (rect.z - rect.x) / float(photonsPerSide);
+    const float cellW = (rect.w - rect.y) / float(photonsPerSide);
+    cellArea = cellU * cellW;
+    const int i = cell % photonsPerSide;
+    const int j = cell / photonsPerSide;
+    const float ju = hashToUnit(photonHash(seed, frame, uint(l), uint(index), 0u));
+    const float jw = hashToUnit(photonHash(seed, frame, uint(l), uint(index), 1u));
+    return vec2(rect.x + (float(i) + ju) * cellU, rect.y + (float(j) + jw) * cellW);
+}
+
+// A photon carrying flux from origin along unit d, placed where that ray enters the box (at
+// origin itself if that is inside). relativeThreshold sets flux.w, the flux below which the
+// photon is dropped, relative to its largest initial channel. A ray that misses the box, or zero
+// flux, gives an EK_PHOTON_INACTIVE photon with zero flux: it never existed.
+GpuPhoton startPhoton(vec3 origin, vec3 d, vec3 flux, float relativeThreshold) {
     GpuPhoton p;
     p.position = vec4(0.0f, 0.0f, 0.0f, float(EK_PHOTON_INACTIVE));
     p.direction = vec4(0.0f);
     p.flux = vec4(0.0f);
-    const GpuLight light = params.lights[l];
-    if (int(light.position.w) != EK_LIGHT_DIRECTIONAL) return p;
-    const vec3 d = normalize(vec3(light.direction));
-    vec3 u;
-    vec3 w;
-    lightPlaneBasis(d, u, w);
-    const vec4 rect = lightPlaneBounds(u, w);
-    const float cellU = (rect.z - rect.x) / float(photonsPerSide);
-    const float cellW = (rect.w - rect.y) / float(photonsPerSide);
-    const int i = index % photonsPerSide;
-    const int j = index / photonsPerSide;
-    const float ju = hashToUnit(photonHash(seed, frame, uint(l), uint(index), 0u));
-    const float jw = hashToUnit(photonHash(seed, frame, uint(l), uint(index), 1u));
-    const float a = rect.x + (float(i) + ju) * cellU;
-    const float b = rect.y + (float(j) + jw) * cellW;
-    // Start one box diagonal before the box's centre along d: outside the box, whatever d is.
-    const vec3 centre = 0.5f * (vec3(params.volumeMin) + vec3(params.volumeMax));
-    const float diagonal = length(vec3(params.volumeMax) - vec3(params.volumeMin));
-    const vec3 origin = centre - diagonal * d + (a - dot(centre, u)) * u + (b - dot(centre, w)) * w;
+    const float largest = max(flux.x, max(flux.y, flux.z));
+    if (!(largest > 0.0f)) return p;
     const vec2 span = intersectVolume(origin, d);
     if (!(span.x < span.y)) return p;
     const vec3 entry = origin + span.x * d;
     // No refraction at the box's faces: the box is meant to be surrounded by n = 1 (the index
     // field is zero at its rim), so the photon enters along d with v = n·d.
     const float n = sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(entry)).w;
-    const vec3 flux = vec3(light.radiance) * (cellU * cellW);
     p.position = vec4(entry, float(EK_PHOTON_ACTIVE));
     p.direction = vec4(n * d, 0.0f);
-    p.flux = vec4(flux, relativeThreshold * max(flux.x, max(flux.y, flux.z)));
+    p.flux = vec4(flux, relativeThreshold * largest);
     return p;
+}
+
+// Photon `index` (cell index % N, index / N of the N×N grid) of directional light l: a jittered
+// ray through the rectangle the box projects to on the plane perpendicular to the light.
+GpuPhoton generateDirectionalPhoton(int l, int photonsPerSide, int index, uint seed, uint frame,
+                                    float relativeThreshold) {
+    const GpuLight light = params.lights[l];
+    const vec3 d = normalize(vec3(light.direction));
+    vec3 u;
+    vec3 w;
+    lightPlaneBasis(d, u, w);
+    float cellArea;
+    const vec2 q = jitteredCellPoint(lightPlaneBounds(u, w), photonsPerSide, index, l, index, seed,
+                                     frame, cellArea);
+    // Start one box diagonal before the box's centre along d: outside the box, whatever d is.
+    const vec3 centre = 0.5f * (vec3(params.volumeMin) + vec3(params.volumeMax));
+    const float diagonal = length(vec3(params.volumeMax) - vec3(params.volumeMin));
+    const vec3 origin =
+        centre - diagonal * d + (q.x - dot(centre, u)) * u + (q.y - dot(centre, w)) * w;
+    return startPhoton(origin, d, vec3(light.radiance) * cellArea, relativeThreshold);
+}
+
+// ---- Point and spot lights: perspective grids on planes at unit distance from the light. A cell
+// of the plane at (s, t) from the axis subtends the solid angle cellArea · cos³θ, cos θ =
+// 1/√(1 + s² + t²), so a photon through its jittered point carrying I × that (× the spot falloff
+// there) is an unbiased estimate of the power the light sends through the cell. ----
+
+// A perspective grid is used only where every corner of the box lies within this cosine of its
+// axis (60°): its rectangle then stays within tan 60° of the axis, so its cells differ in solid
+// angle by at most 8× and none degenerates.
+EK_CONST float EK_PHOTON_GRID_MIN_COS = 0.5f;
+
+// The axis of perspective grid `grid` (EK_PHOTON_GRID_BOX or _SPOT) of a light.
+vec3 perspectiveAxis(GpuLight light, int grid) {
+    if (grid == EK_PHOTON_GRID_SPOT) return normalize(vec3(light.direction));
+    const vec3 centre = 0.5f * (vec3(params.volumeMin) + vec3(params.volumeMax));
+    return normalize(centre - vec3(light.position));
+}
+
+// The rectangle of perspective grid `grid` on the plane at unit distance from the light along
+// axis a (basis u, w): x, y = min; z, w = max. BOX: the box's projection. SPOT: the square around
+// the outer cone's footprint (half-width tan θ_outer), cut to the box's projection where that
+// exists. minCos gets the smallest cosine between a and the direction to a box corner: where it is
+// ≤ 0 some corner lies beside or behind the light and the box has no projection.
+vec4 perspectiveRect(GpuLight light, int grid, vec3 a, vec3 u, vec3 w, EK_OUT(float) minCos) {
+    const vec3 p = vec3(light.position);
+    vec4 r = vec4(3.0e38f, 3.0e38f, -3.0e38f, -3.0e38f);
+    minCos = 1.0f;
+    for (int c = 0; c < 8; ++c) {
+        const vec3 e = volumeCorner(c) - p;
+        const float z = dot(e, a);
+        const float len = length(e);
+        minCos = min(minCos, len > 0.0f ? z / len : -1.0f);
+        if (!(z > 0.0f)) continue;
+        const float s = dot(e, u) / z;
+        const float t = dot(e, w) / z;
+        r = vec4(min(r.x, s), min(r.y, t), max(r.z, s), max(r.w, t));
+    }
+    if (grid != EK_PHOTON_GRID_SPOT) return r;
+    const float c = light.direction.w;
+    const float halfWidth = sqrt(max(1.0f - c * c, 0.0f)) / c;
+    if (!(minCos > 0.0f)) return vec4(-halfWidth, -halfWidth, halfWidth, halfWidth);
+    return vec4(max(r.x, -halfWidth), max(r.y, -halfWidth), min(r.z, halfWidth),
+                min(r.w, halfWidth));
+}
+
+float rectArea(vec4 r) {
+    return (r.z - r.x) * (r.w - r.y);
+}
+
+// How light l's photons are laid out (EK_PHOTON_GRID_*), decided once on the host and passed to
+// the generator: the layout sets the photon count, so both backends must agree on it exactly.
+// Point and spot lights take the perspective grid with the smaller rectangle (the fewer photons
+// wasted outside the box or the cone) where one is usable, else the six faces of a cube around
+// the light (a light inside the box, or close beside it).
+int photonGrid(int l) {
+    const GpuLight light = params.lights[l];
+    const int type = int(light.position.w);
+    if (type == EK_LIGHT_DIRECTIONAL) return EK_PHOTON_GRID_PARALLEL;
+    int grid = EK_PHOTON_GRID_CUBE;
+    float area = 3.0e38f;
+    vec3 u;
+    vec3 w;
+    float minCos;
+    vec3 a = perspectiveAxis(light, EK_PHOTON_GRID_BOX);
+    lightPlaneBasis(a, u, w);
+    vec4 r = perspectiveRect(light, EK_PHOTON_GRID_BOX, a, u, w, minCos);
+    if (minCos >= EK_PHOTON_GRID_MIN_COS) {
+        grid = EK_PHOTON_GRID_BOX;
+        area = rectArea(r);
+    }
+    if (type == EK_LIGHT_SPOT && light.direction.w >= EK_PHOTON_GRID_MIN_COS) {
+        a = perspectiveAxis(light, EK_PHOTON_GRID_SPOT);
+        lightPlaneBasis(a, u, w);
+        r = perspectiveRect(light, EK_PHOTON_GRID_SPOT, a, u, w, minCos);
+        // The cone's square misses the box's projection: no photon could reach the box.
+        if (!(r.x < r.z && r.y < r.w)) return EK_PHOTON_GRID_NONE;
+        if (rectArea(r) < area) grid = EK_PHOTON_GRID_SPOT;
+    }
+    return grid;
+}
+
+// How many N×N grids layout `grid` has.
+int photonGridFaces(int grid) {
+    if (grid == EK_PHOTON_GRID_NONE) return 0;
+    return grid == EK_PHOTON_GRID_CUBE ? 6 : 1;
+}
+
+// The face of layout `grid` that photon cell `cell` lies on: its axis a, basis u, w and rectangle
+// (x, y = min; z, w = max) at unit distance; cell becomes the index within that face. Cube faces
+// are ±x, ±y, ±z in that order, each the square [−1, 1]², together the whole sphere.
+vec4 lightGridFace(GpuLight light, int grid, int cellsPerFace, EK_INOUT(int) cell, EK_OUT(vec3) a,
+                   EK_OUT(vec3) u, EK_OUT(vec3) w) {
+    if (grid == EK_PHOTON_GRID_CUBE) {
+        const int face = cell / cellsPerFace;
+        cell -= face * cellsPerFace;
+        a = vec3(0.0f);
+        a[face / 2] = (face & 1) == 0 ? 1.0f : -1.0f;
+        lightPlaneBasis(a, u, w);
+        return vec4(-1.0f, -1.0f, 1.0f, 1.0f);
+    }
+    a = perspectiveAxis(light, grid);
+    lightPlaneBasis(a, u, w);
+    float minCos;
+    return perspectiveRect(light, grid, a, u, w, minCos);
+}
+
+// Photon `index` of point or spot light l laid out as `grid` (photonGrid): the ray from the light
+// through the jittered point of its cell, carrying I × the cell's solid angle (× the spot
+// falloff along the ray), starting where the ray enters the box, or at the light inside it.
+GpuPhoton generatePointPhoton(int l, int grid, int photonsPerSide, int index, uint seed, uint frame,
+                              float relativeThreshold) {
+    const GpuLight light = params.lights[l];
+    int cell = index;
+    vec3 a;
+    vec3 u;
+    vec3 w;
+    const vec4 rect = lightGridFace(light, grid, photonsPerSide * photonsPerSide, cell, a, u, w);
+    float cellArea;
+    const vec2 q = jitteredCellPoint(rect, photonsPerSide, cell, l, index, seed, frame, cellArea);
+    const vec3 d = normalize(a + q.x * u + q.y * w);
+    // 1 + s² + t² from the plane coordinates, not |a + s u + t w|²: exact for the ideal frame.
+    const float r2 = 1.0f + q.x * q.x + q.y * q.y;
+    float solidAngle = cellArea / (r2 * sqrt(r2));
+    if (int(light.position.w) == EK_LIGHT_SPOT)
+        solidAngle *= smoothstep(light.direction.w, light.radiance.w,
+                                 dot(d, normalize(vec3(light.direction))));
+    return startPhoton(vec3(light.position), d, vec3(light.radiance) * solidAngle,
+                       relativeThreshold);
+}
+
+// Photon `index` of light l laid out as `grid` (photonGrid(l)); photon indices run over
+// photonGridFaces(grid) · N² per light.
+GpuPhoton generatePhoton(int l, int grid, int photonsPerSide, int index, uint seed, uint frame,
+                         float relativeThreshold) {
+    if (grid == EK_PHOTON_GRID_PARALLEL)
+        return generateDirectionalPhoton(l, photonsPerSide, index, seed, frame, relativeThreshold);
+    return generatePointPhoton(l, grid, photonsPerSide, index, seed, frame, relativeThreshold);
 }
 
 // ∫ e^(−κt) dt over [0, s]: (1 − e^(−κs)) / κ, and its series as κs → 0 where that cancels.
