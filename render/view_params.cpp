@@ -91,8 +91,8 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     return setup;
 }
 
-bool lightEmitsPhotons(LightType type) {
-    return type == LightType::Directional;
+bool lightEmitsPhotons(LightType) {
+    return true;  // directional, point and spot (shaders/shared/photons.h)
 }
 
 bool scenePhotonsWanted(const Scene& scene) {
