@@ -17,9 +17,17 @@ struct RefractionKernelCpu : VolumeAccessCpu {
 // What the octree shaders see: the pyramid SSBO.
 struct OctreeKernelCpu {
     const vec2* pyramid = nullptr;
+    const vec4* gradient = nullptr;  // w: n
+    ivec3 res = ivec3(0);
     vec2 fetchPyramid(int index) const { return pyramid[index]; }
+    float fetchIndex(ivec3 v) const {
+        return gradient[(size_t(v.z) * size_t(res.y) + size_t(v.y)) * size_t(res.x) + size_t(v.x)]
+            .w;
+    }
 
+#define EK_OCTREE_LEAF_RANGE
 #include "shaders/shared/octree.h"
+#undef EK_OCTREE_LEAF_RANGE
 };
 
 EK_NAMESPACE_END
@@ -53,7 +61,9 @@ std::vector<glm::vec2> buildPyramid(glm::ivec3 res, const RefractionVolumeCpu& g
     shared::OctreeKernelCpu k;
     const int levels = k.pyramidLevelCount(res);
     std::vector<glm::vec2> pyramid(octreePyramidNodeCount(res));
-    for (size_t i = 0; i < gradient.size(); ++i) pyramid[i] = glm::vec2(gradient[i].w);
+    k.gradient = gradient.data();
+    k.res = res;
+    forEachVoxel(res, [&](glm::ivec3 v, size_t i) { pyramid[i] = k.pyramidLeafRange(res, v); });
     k.pyramid = pyramid.data();
     for (int level = 1; level < levels; ++level) {
         const glm::ivec3 size = k.pyramidLevelSize(res, level);

@@ -12,7 +12,9 @@ uniform ivec3 resolution;  // voxels
 uniform int level;
 
 vec2 fetchPyramid(int index) { return pyramid[index]; }
+float fetchIndex(ivec3 voxel) { return imageLoad(gradientVolume, voxel).w; }
 
+#define EK_OCTREE_LEAF_RANGE
 #include "shared/octree.h"
 
 void main() {
@@ -20,8 +22,7 @@ void main() {
     if (any(greaterThanEqual(node, pyramidLevelSize(resolution, level)))) return;
     const int index = pyramidNodeIndex(resolution, level, node);
     if (level == 0) {
-        const float n = imageLoad(gradientVolume, node).w;
-        pyramid[index] = vec2(n, n);
+        pyramid[index] = pyramidLeafRange(resolution, node);
     } else {
         pyramid[index] = pyramidNodeFromChildren(resolution, level, node);
     }

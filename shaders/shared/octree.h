@@ -2,7 +2,8 @@
 // in the CPU twin. Functions only; needs from the includer `vec2 fetchPyramid(int index)`, the
 // (n_min, n_max) stored at a flat pyramid index (pyramidNodeIndex).
 //
-// Pyramid: level 0 holds one node per voxel (n_min = n_max = n at its centre); a node of level k
+// Pyramid: level 0 holds one node per voxel: the range of n over the voxel's 5×5×5
+// neighbourhood (pyramidLeafRange below says why); a node of level k
 // covers 2^k voxels per axis, so level k has ceil(resolution / 2^k) nodes per axis (the last node
 // of an axis that is not a power of two covers fewer voxels), up to the coarsest level K, a
 // single node covering the whole volume. All levels lie in one flat array, level after level,
@@ -17,8 +18,7 @@
 // little variation (ε ≤ r < ε') is preferred over finer, flat nodes — the "intermediate step
 // sizes" §5.3 introduces: larger than the finer nodes' boundaries allow, yet capped.
 // When no node of level 1 or coarser has r < ε', the voxel gets label 0 and Δs_max = minStep
-// (the user's minimum step): a level-0 node is a single sample whose range is always 0, so it
-// says nothing about how n varies around the voxel, and marching there takes the minimum step.
+// (the user's minimum step): near strong variation, marching takes the minimum step.
 // Steps are in scene units.
 
 #define EK_UNLIMITED_STEP 1e30f
@@ -53,6 +53,27 @@ int pyramidNodeIndex(ivec3 res, int level, ivec3 node) {
     const ivec3 s = pyramidLevelSize(res, level);
     return pyramidLevelOffset(res, level) + (node.z * s.y + node.y) * s.x + node.x;
 }
+
+#ifdef EK_OCTREE_LEAF_RANGE
+// Level 0 (with EK_OCTREE_LEAF_RANGE; needs `float fetchIndex(ivec3 voxel)`, n at a voxel
+// centre): (n_min, n_max) over the voxels within two of `voxel` along every axis, clamped at the
+// faces. A march inside a voxel samples ∇n trilinearly from centres up to one voxel away, and
+// each of those is a central difference reaching one voxel further: n up to two voxels away
+// bends a path inside this voxel. A node is flat only if all of that is flat; with n at its own
+// centres alone, a voxel beside a sharp rim looked flat, allowed an unlimited step, and the
+// rim's ∇n sampled at its start reversed photons.
+vec2 pyramidLeafRange(ivec3 res, ivec3 voxel) {
+    vec2 range = vec2(EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP);
+    for (int dz = -2; dz <= 2; ++dz)
+        for (int dy = -2; dy <= 2; ++dy)
+            for (int dx = -2; dx <= 2; ++dx) {
+                const float n =
+                    fetchIndex(clamp(voxel + ivec3(dx, dy, dz), ivec3(0), res - ivec3(1)));
+                range = vec2(min(range.x, n), max(range.y, n));
+            }
+    return range;
+}
+#endif
 
 // (n_min, n_max) of node `node` at level ≥ 1 from its up to 8 children at level − 1; children
 // past the edge of a non-power-of-two axis are clamped onto the last one, which changes neither
