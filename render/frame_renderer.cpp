@@ -193,9 +193,12 @@ Image FrameRenderer::render(int frame) {
             timer_->end();
         }
         timer_->begin("view");
-        Image image = renderViewCpu(
-            setup, slotGrids, needLights ? lightVolumesCpu_ : std::vector<LightVolumeCpu>{},
-            curved ? gradientCpu_ : std::vector<glm::vec4>{}, photons ? &photonsCpu_ : nullptr);
+        // Empty stand-ins by reference: `cond ? member : {}` would copy the member every frame.
+        static const std::vector<LightVolumeCpu> noLightVolumes;
+        static const std::vector<glm::vec4> noGradient;
+        Image image =
+            renderViewCpu(setup, slotGrids, needLights ? lightVolumesCpu_ : noLightVolumes,
+                          curved ? gradientCpu_ : noGradient, photons ? &photonsCpu_ : nullptr);
         timer_->end();
         commitInputs(gradientChanged, octreeChanged, photonsChanged, lightsChanged,
                      std::move(refractionInputs), std::move(photonKey), std::move(lightInputs));
