@@ -7,6 +7,7 @@
 #include "core/resample.h"
 #include "core/scene_sources.h"
 #include "core/vdb_import.h"
+#include "support/scene_builders.h"
 
 #include <openvdb/tools/Interpolation.h>
 
@@ -25,12 +26,7 @@ Scene sceneReading(const std::string& field) {
 }
 
 SourceSpec sphere(glm::vec3 c, float r, float value, float voxel) {
-    SourceSpec s;
-    s.type = SourceType::Sphere;
-    s.center = c;
-    s.radius = r;
-    s.value = value;
-    s.voxelSize = voxel;
+    SourceSpec s = eikon::test::sphereSource("density", c, r, value, 0.0f, voxel);
     s.jsonPath = "/sources/x";
     return s;
 }

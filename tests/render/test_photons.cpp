@@ -49,6 +49,26 @@ float voxelSize(const PhotonScene& s) {
     return s.field.volume.voxelSize().x;
 }
 
+// The worst distance, in voxels, between where each photon of a trace left the box and where
+// `exactExit` says a photon starting where it entered should; every photon that entered must
+// have escaped. checked gets how many were compared.
+double worstExitError(const PhotonScene& s, const PhotonSettings& settings,
+                      const PhotonResultCpu& r,
+                      const std::function<glm::dvec3(glm::dvec3 entry)>& exactExit, int& checked) {
+    double worst = 0.0;
+    checked = 0;
+    for (int i = 0; i < int(r.photons.size()); ++i) {
+        const shared::GpuPhoton start = photonStart(s, settings, i);
+        if (int(start.position.w) != EK_PHOTON_ACTIVE) continue;
+        const shared::GpuPhoton& end = r.photons[size_t(i)];
+        REQUIRE(int(end.position.w) == EK_PHOTON_ESCAPED);
+        const glm::dvec3 want = exactExit(glm::dvec3(glm::vec3(start.position)));
+        worst = std::max(worst, glm::length(glm::dvec3(glm::vec3(end.position)) - want));
+        ++checked;
+    }
+    return worst / voxelSize(s);
+}
+
 double maxRelativeImbalance(const PhotonTotals& t) {
     double worst = 0.0;
     for (int c = 0; c < 3; ++c) {
@@ -189,24 +209,16 @@ TEST_CASE("photons in a uniform n = 1 clear medium leave where straight lines do
     settings.photonsPerSide = 48;
     const PhotonResultCpu r = s.trace(settings);
     REQUIRE(r.photonsTraced > 0);
-    double worst = 0.0;
-    int checked = 0;
-    for (int i = 0; i < int(r.photons.size()); ++i) {
-        const shared::GpuPhoton start = photonStart(s, settings, i);
-        if (int(start.position.w) != EK_PHOTON_ACTIVE) continue;
-        const shared::GpuPhoton& end = r.photons[size_t(i)];
-        REQUIRE(int(end.position.w) == EK_PHOTON_ESCAPED);
-        // The straight line from the entry to the box's far side, in double precision.
-        const glm::dvec3 x0(glm::vec3(start.position));
-        const glm::dvec3 dd(d);
+    // The straight line from the entry to the box's far side, in double precision.
+    const glm::dvec3 dd(d);
+    auto straightExit = [&](glm::dvec3 x0) {
         double tExit = 1e30;
         for (int a = 0; a < 3; ++a)
             if (dd[a] != 0.0) tExit = std::min(tExit, ((dd[a] > 0 ? 1.0 : -1.0) - x0[a]) / dd[a]);
-        const glm::dvec3 want = x0 + dd * tExit;
-        worst = std::max(worst, glm::length(glm::dvec3(glm::vec3(end.position)) - want));
-        ++checked;
-    }
-    worst /= voxelSize(s);
+        return x0 + dd * tExit;
+    };
+    int checked = 0;
+    const double worst = worstExitError(s, settings, r, straightExit, checked);
     INFO(checked << " photons; worst exit error " << worst << " voxels; steps " << r.steps);
     CHECK(checked == r.photonsTraced);
     CHECK(worst < 1e-4);
@@ -247,19 +259,11 @@ TEST_CASE("photons in a linear n^2 gradient follow the closed-form parabola", "[
         settings.minStepVoxels = step;
         const PhotonResultCpu r = s.trace(settings);
         steps = r.steps;
-        double worst = 0.0;
         int checked = 0;
-        for (int i = 0; i < int(r.photons.size()); ++i) {
-            const shared::GpuPhoton start = photonStart(s, settings, i);
-            if (int(start.position.w) != EK_PHOTON_ACTIVE) continue;
-            const shared::GpuPhoton& end = r.photons[size_t(i)];
-            REQUIRE(int(end.position.w) == EK_PHOTON_ESCAPED);
-            const glm::dvec3 want = exactExit(glm::dvec3(glm::vec3(start.position)), glm::dvec3(d));
-            worst = std::max(worst, glm::length(glm::dvec3(glm::vec3(end.position)) - want));
-            ++checked;
-        }
+        const double worst = worstExitError(
+            s, settings, r, [&](glm::dvec3 x0) { return exactExit(x0, glm::dvec3(d)); }, checked);
         REQUIRE(checked > 100);
-        return worst / voxelSize(s);
+        return worst;
     };
 
     // Default settings: the octree labels this medium level 1 (2-voxel nodes, ε ≤ range < ε'),

@@ -18,6 +18,7 @@
 #include "core/vdb_import.h"
 #include "render/frame_renderer.h"
 #include "render/image.h"
+#include "support/backends.h"
 #include "support/scene_builders.h"
 #include "support/test_paths.h"
 
@@ -33,21 +34,18 @@ using eikon::Scene;
 using eikon::ShadowMode;
 using eikon::SourceSpec;
 using eikon::SourceType;
+using eikon::test::backendName;
 using eikon::test::boxSource;
 using eikon::test::cameraAt;
 using eikon::test::directionalLight;
 using eikon::test::material;
+using eikon::test::relativeError;
 using eikon::test::scratchDir;
 using eikon::test::setVolume;
 using eikon::test::sphereSource;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-const char* backendName(Backend b) {
-    return b == Backend::Gpu ? "GPU" : "CPU twin";
-}
 const char* shadowName(ShadowMode m) {
     return m == ShadowMode::Volume ? "volume" : m == ShadowMode::Swept ? "swept" : "marched";
 }
@@ -110,10 +108,6 @@ std::vector<char> fileBytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     REQUIRE(in.good());
     return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-double relativeError(double value, double expected) {
-    return std::abs(value - expected) / std::abs(expected);
 }
 
 struct TwinDifference {
@@ -345,27 +339,10 @@ TEST_CASE("an opaque blocker between the light and a scattering sphere shadows i
 }
 
 TEST_CASE("single scattering in a slab lit from behind matches the closed form", "[view]") {
-    // A slab z in [-L/2, L/2] (x, y in [-1, 1]) scattering sigma per unit, no absorption, g = 0,
-    // lit by a directional light of irradiance E travelling +z, seen from the +z axis along −z.
-    // At depth s below the camera-side face the light has crossed L − s of the slab and the view
-    // ray s, and the scattering angle is 0, so
-    //   L_pixel = ∫0^L sigma p E e^(−sigma (L − s)) e^(−sigma s) ds = sigma p E L e^(−sigma L),
-    // with p = 1 / (4 pi). The background is black. Per channel, three sigmas at once.
-    const double L = 1.0;
+    // The closed form is in tests/support/scene_builders.h (scatteringSlab).
     const double E = 2.0;
     const glm::vec3 sigma(0.5f, 1.5f, 3.0f);
-    Scene scene;
-    scene.sources.push_back(
-        boxSource("density", glm::vec3(-1.0f, -1.0f, -0.5f), glm::vec3(1.0f, 1.0f, 0.5f), 1.0f));
-    scene.materials.push_back(material("scatterer", "density", glm::vec3(0.0f), sigma, 0.0f));
-    scene.lights.push_back(directionalLight(glm::vec3(0.0f, 0.0f, 1.0f), float(E)));
-    // The volume is the slab, on the source's own voxel centres: density 1 everywhere inside.
-    setVolume(scene, glm::vec3(-1.0f, -1.0f, -0.5f), glm::vec3(1.0f, 1.0f, 0.5f),
-              glm::ivec3(40, 40, 20));
-    scene.camera = cameraAt(glm::vec3(0.0f, 0.0f, 4.0f), glm::vec3(0.0f), 30.0f);
-    scene.render.width = 33;
-    scene.render.height = 25;
-
+    Scene scene = eikon::test::scatteringSlab(sigma, float(E));
     for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept, ShadowMode::Marched}) {
         for (Backend backend : {Backend::Gpu, Backend::Cpu}) {
             INFO(backendName(backend) << ", shadows " << shadowName(mode));
@@ -374,7 +351,7 @@ TEST_CASE("single scattering in a slab lit from behind matches the closed form",
             double meanT = 0;
             for (int c = 0; c < 3; ++c) {
                 const double s = sigma[c];
-                const double expected = s * E * L * std::exp(-s * L) / (4.0 * kPi);
+                const double expected = eikon::test::slabCentrePixel(s, E);
                 INFO("channel " << c << ": sigma " << s << ", got " << p[c] << ", expected "
                                 << expected << ", relative error "
                                 << relativeError(p[c], expected));
@@ -382,7 +359,7 @@ TEST_CASE("single scattering in a slab lit from behind matches the closed form",
                 // 0.5, 1.5, 3: the midpoint rule's 2 sinh(sigma h / 2) / (sigma h) − 1
                 // = (sigma h)² / 24 with h = 0.05 (the shadow lookups sit at step midpoints).
                 CHECK(relativeError(p[c], expected) < 0.01);
-                meanT += std::exp(-s * L) / 3.0;
+                meanT += std::exp(-s) / 3.0;  // L = 1
             }
             CHECK(relativeError(p.a, meanT) < 0.005);
         }

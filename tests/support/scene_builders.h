@@ -1,5 +1,7 @@
 #pragma once
-// Small builders for scenes made in code, shared by the rendering tests.
+// Small builders for scenes made in code, and the checks around them, shared by the rendering
+// tests.
+#include <cmath>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -73,6 +75,37 @@ inline void setVolume(Scene& scene, glm::vec3 lo, glm::vec3 hi, glm::ivec3 resol
     scene.volume.bounds.max = hi;
     scene.volume.autoResolution = false;
     scene.volume.resolution = resolution;
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
+inline double relativeError(double value, double expected) {
+    return std::abs(value - expected) / std::abs(expected);
+}
+
+// A slab z in [-L/2, L/2] with L = 1 (x, y in [-1, 1]) of density 1, scattering `sigma` per unit
+// (no absorption, g = 0), lit along +z by a directional light of irradiance E, seen along −z
+// from the axis (odd image sizes put a pixel centre on it), black background. The volume is the
+// slab on the source's own voxel centres. The centre pixel is, per channel,
+//   L_pixel = ∫0^L sigma p E e^(−sigma (L − s)) e^(−sigma s) ds = sigma p E L e^(−sigma L),
+// p = 1/4π: at depth s the light has crossed L − s of the slab and the view ray s, at a
+// scattering angle of 0.
+inline Scene scatteringSlab(glm::vec3 sigma, float irradiance) {
+    Scene scene;
+    scene.sources.push_back(
+        boxSource("density", glm::vec3(-1.0f, -1.0f, -0.5f), glm::vec3(1.0f, 1.0f, 0.5f), 1.0f));
+    scene.materials.push_back(material("scatterer", "density", glm::vec3(0.0f), sigma, 0.0f));
+    scene.lights.push_back(directionalLight(glm::vec3(0.0f, 0.0f, 1.0f), irradiance));
+    setVolume(scene, glm::vec3(-1.0f, -1.0f, -0.5f), glm::vec3(1.0f, 1.0f, 0.5f),
+              glm::ivec3(40, 40, 20));
+    scene.camera = cameraAt(glm::vec3(0.0f, 0.0f, 4.0f), glm::vec3(0.0f), 30.0f);
+    scene.render.width = 33;
+    scene.render.height = 25;
+    return scene;
+}
+
+inline double slabCentrePixel(double sigma, double irradiance) {
+    return sigma * irradiance * std::exp(-sigma) / (4.0 * kPi);
 }
 
 }  // namespace eikon::test
