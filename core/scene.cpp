@@ -384,10 +384,31 @@ CameraSpec readCamera(const Value& value) {
     return camera;
 }
 
-EnvironmentSpec readEnvironment(const Value& value) {
+EnvironmentSpec readEnvironment(const Value& value, const fs::path& sceneDirectory) {
     Object object(value, "the environment");
     EnvironmentSpec environment;
-    if (auto color = object.optional("color")) environment.color = readColor(*color);
+    std::string type = "color";
+    if (auto t = object.optional("type")) type = t->choice({"color", "gradient", "image"});
+    object.setKind("a " + type + " environment");
+    if (type == "color") {
+        if (auto color = object.optional("color")) environment.color = readColor(*color);
+    } else if (type == "gradient") {
+        environment.type = EnvironmentType::Gradient;
+        environment.zenith = readColor(object.required("zenith", kColorForm));
+        environment.horizon = readColor(object.required("horizon", kColorForm));
+        environment.ground = readColor(object.required("ground", kColorForm));
+    } else {
+        environment.type = EnvironmentType::Image;
+        const Value file = object.required("file", "the path of an equirectangular .exr file");
+        environment.file = resolveAgainst(sceneDirectory, file.nonEmptyString());
+        if (auto intensity = object.optional("intensity")) {
+            environment.intensity = intensity->floatNumber(Range::atLeast(0.0));
+        }
+        if (auto rotation = object.optional("rotation_deg")) {
+            environment.rotationDeg = rotation->floatNumber();
+        }
+    }
+    // Keys of the other types are unexpected here; finish() names them with the expected ones.
     object.finish();
     return environment;
 }
@@ -507,7 +528,7 @@ Scene readScene(const Value& root, const std::string& file) {
     if (auto lights = object.optional("lights")) scene.lights = readLights(*lights);
     if (auto camera = object.optional("camera")) scene.camera = readCamera(*camera);
     if (auto environment = object.optional("environment")) {
-        scene.environment = readEnvironment(*environment);
+        scene.environment = readEnvironment(*environment, sceneDirectory);
     }
     if (auto render = object.optional("render")) scene.render = readRender(*render);
     if (auto output = object.optional("output")) scene.output = readOutput(*output);

@@ -85,8 +85,23 @@ struct CameraSpec {
     float horizontalFovDeg = 45.0f;  // in (0, 180)
 };
 
+// What view rays see where they leave the volume (shaders/shared/environment.h). Up is +y.
+enum class EnvironmentType { Color, Gradient, Image };
+
 struct EnvironmentSpec {
-    glm::vec3 color{0.0f};  // constant background radiance
+    EnvironmentType type = EnvironmentType::Color;
+    glm::vec3 color{0.0f};  // Color: constant background radiance
+    // Gradient: the sky blends horizon -> zenith by sqrt(sin(elevation)); below the horizon the
+    // ground colour takes over within a short blend.
+    glm::vec3 zenith{0.0f};
+    glm::vec3 horizon{0.0f};
+    glm::vec3 ground{0.0f};
+    // Image: an equirectangular linear EXR (resolved against the scene's folder; read by
+    // render/environment_map.h, since core does not read images), its radiance × intensity,
+    // turned by rotationDeg about +y (counter-clockwise seen from above).
+    std::string file;
+    float intensity = 1.0f;
+    float rotationDeg = 0.0f;
 };
 
 // Where the viewing pass gets a light's transmittance: a volume computed once per change of

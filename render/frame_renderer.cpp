@@ -4,6 +4,7 @@
 
 #include "core/camera.h"
 #include "core/resample.h"
+#include "render/environment_map.h"
 #include "render/gl_context.h"
 #include "render/params_buffer.h"
 #include "render/photon_radiance.h"
@@ -45,12 +46,14 @@ FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* con
         viewPass_ = std::make_unique<ViewPassGpu>(hardwareTrilinear_);
         refractionGpu_ = std::make_unique<RefractionVolumesGpu>();
     }
+    environment_ = std::make_unique<EnvironmentMap>(backend_ == Backend::Gpu);
     timer_ = std::make_unique<GpuStageTimer>(backend_ == Backend::Gpu);
 }
 
 FrameRenderer::~FrameRenderer() {
     // GL objects go before the context that owns them.
     timer_.reset();
+    environment_.reset();
     viewPass_.reset();
     photonsGpu_.reset();
     refractionGpu_.reset();
@@ -79,6 +82,8 @@ std::vector<unsigned char> lightVolumeInputs(const ViewSetup& setup,
     p.cameraOrigin = p.cameraRight = p.cameraUp = p.cameraForward = glm::vec4(0.0f);
     p.image.x = p.image.y = 0;
     p.background = glm::vec4(0.0f);
+    p.environment = glm::ivec4(0);
+    p.environmentSky = p.environmentHorizon = p.environmentGround = glm::vec4(0.0f);
     std::vector<unsigned char> key;
     appendBytes(key, &p, sizeof(p));
     appendVersions(key, grids);
@@ -120,6 +125,10 @@ std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
 
 }  // namespace
 
+int FrameRenderer::environmentLoads() const {
+    return environment_->loads();
+}
+
 int FrameRenderer::uploads() const {
     return textures_ ? textures_->uploads() : 0;
 }
@@ -133,13 +142,16 @@ std::vector<StageTime> FrameRenderer::takeStats() {
 Image FrameRenderer::render(int frame) {
     timer_->begin("load");
     sources_.loadFrame(frame, fields_);
+    environment_->update(scene_);
     timer_->end();
 
     timer_->begin("resample");
     volume_ = chooseRenderVolume(scene_, fields_);
     const CameraFrame camera =
         makeCameraFrame(scene_.camera, volume_.bounds, scene_.render.width, scene_.render.height);
-    const ViewSetup setup = makeViewSetup(scene_, volume_, camera);
+    const Image& environment = environment_->image();
+    const ViewSetup setup =
+        makeViewSetup(scene_, volume_, camera, glm::ivec2(environment.width, environment.height));
     std::vector<const DenseGrid*> slotGrids;
     for (const std::string& name : setup.slotFields) {
         const Field& f = fields_.get(name);
@@ -196,9 +208,9 @@ Image FrameRenderer::render(int frame) {
         // Empty stand-ins by reference: `cond ? member : {}` would copy the member every frame.
         static const std::vector<LightVolumeCpu> noLightVolumes;
         static const std::vector<glm::vec4> noGradient;
-        Image image =
-            renderViewCpu(setup, slotGrids, needLights ? lightVolumesCpu_ : noLightVolumes,
-                          curved ? gradientCpu_ : noGradient, photons ? &photonsCpu_ : nullptr);
+        Image image = renderViewCpu(
+            setup, slotGrids, needLights ? lightVolumesCpu_ : noLightVolumes,
+            curved ? gradientCpu_ : noGradient, photons ? &photonsCpu_ : nullptr, &environment);
         timer_->end();
         commitInputs(gradientChanged, octreeChanged, photonsChanged, lightsChanged,
                      std::move(refractionInputs), std::move(photonKey), std::move(lightInputs));
@@ -218,9 +230,9 @@ Image FrameRenderer::render(int frame) {
     if (lightsChanged) lightVolumesGpu_->compute(setup, *textures_, timer_.get());
     commitInputs(gradientChanged, octreeChanged, photonsChanged, lightsChanged,
                  std::move(refractionInputs), std::move(photonKey), std::move(lightInputs));
-    return viewPass_->render(setup, *textures_, *lightVolumesGpu_,
-                             curved ? refractionGpu_->gradientTexture() : 0u,
-                             photons ? photonsGpu_.get() : nullptr, timer_.get());
+    return viewPass_->render(
+        setup, *textures_, *lightVolumesGpu_, curved ? refractionGpu_->gradientTexture() : 0u,
+        photons ? photonsGpu_.get() : nullptr, timer_.get(), environment_->texture());
 }
 
 void FrameRenderer::commitInputs(bool gradientChanged, bool octreeChanged, bool photonsChanged,

@@ -21,6 +21,7 @@
 
 namespace eikon {
 
+class EnvironmentMap;
 class GlContext;
 class LightVolumesGpu;
 class PhotonRadianceGpu;
@@ -63,6 +64,8 @@ public:
     // The smoothed photon volumes of the last trace (the GPU's read back), for tests; empty
     // when the scene has no photon lighting.
     PhotonRadianceCpu photonVolumes() const;
+    // How often the environment image was read: once per change of its path.
+    int environmentLoads() const;
     // Whether the GPU shaders let the texture unit filter (see useHardwareTrilinear).
     bool hardwareTrilinear() const { return hardwareTrilinear_; }
 
@@ -84,6 +87,7 @@ private:
     std::unique_ptr<ParamsBuffer> paramsBuffer_;
     std::unique_ptr<LightVolumesGpu> lightVolumesGpu_;
     std::unique_ptr<ViewPassGpu> viewPass_;
+    std::unique_ptr<EnvironmentMap> environment_;
     std::vector<LightVolumeCpu> lightVolumesCpu_;
     std::unique_ptr<RefractionVolumesGpu> refractionGpu_;
     std::vector<glm::vec4> gradientCpu_;

@@ -42,9 +42,34 @@ int shadowModeCode(ShadowMode mode) {
     return EK_SHADOWS_VOLUME;
 }
 
+void packEnvironment(const Scene& scene, glm::ivec2 imageSize, shared::GpuViewParams& p) {
+    const EnvironmentSpec& env = scene.environment;
+    switch (env.type) {
+        case EnvironmentType::Color:
+            p.environment = glm::ivec4(EK_ENVIRONMENT_COLOR, 0, 0, 0);
+            break;
+        case EnvironmentType::Gradient:
+            p.environment = glm::ivec4(EK_ENVIRONMENT_GRADIENT, 0, 0, 0);
+            p.environmentSky = v4(env.zenith);
+            p.environmentHorizon = v4(env.horizon);
+            p.environmentGround = v4(env.ground);
+            break;
+        case EnvironmentType::Image: {
+            if (imageSize.x < 1 || imageSize.y < 1)
+                throw Error(scene.path + ":/environment/file",
+                            "the environment image '" + env.file + "' was not loaded");
+            p.environment = glm::ivec4(EK_ENVIRONMENT_IMAGE, imageSize.x, imageSize.y, 0);
+            const float angle = glm::radians(env.rotationDeg);
+            p.environmentSky = glm::vec4(env.intensity, std::cos(angle), std::sin(angle), 0.0f);
+            break;
+        }
+    }
+}
+
 }  // namespace
 
-ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera) {
+ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera,
+                        glm::ivec2 environmentSize) {
     if (scene.materials.size() > EK_MAX_MATERIALS)
         throw Error(scene.path + ":/materials",
                     "at most " + std::to_string(EK_MAX_MATERIALS) + " materials are supported");
@@ -66,6 +91,7 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     p.image = glm::ivec4(scene.render.width, scene.render.height, int(scene.lights.size()),
                          shadowModeCode(scene.render.shadows));
     p.background = v4(scene.environment.color, scene.render.minTransmittance);
+    packEnvironment(scene, environmentSize, p);
 
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const MaterialSpec& mat = scene.materials[m];

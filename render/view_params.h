@@ -16,7 +16,10 @@ struct ViewSetup {
     std::vector<std::string> slotFields;  // slot -> field name, the textures to bind in order
 };
 
-ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera);
+// environmentSize: the width and height of the environment image (render/environment_map.h)
+// when scene.environment asks for one.
+ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera,
+                        glm::ivec2 environmentSize = glm::ivec2(0));
 
 // Whether the viewing pass takes in-scattered light from photon volumes (scene.render.photons:
 // "on" when something scatters; "auto" when, besides, some material refracts, so that straight

@@ -23,10 +23,11 @@ class ShaderProgram;
 // thread count. `lightVolumes` may be empty when viewNeedsLightVolumes(setup) is false.
 // `gradient` is the ∇n volume (render/refraction_volume.h) when setup.params.pipeline.x asks for
 // curved rays, else empty. `photons`: the smoothed photon volumes when pipeline.y asks for them.
+// `environment`: the environment image when params.environment.x asks for one.
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const std::vector<LightVolumeCpu>& lightVolumes,
                     const std::vector<glm::vec4>& gradient = {},
-                    const PhotonRadianceCpu* photons = nullptr);
+                    const PhotonRadianceCpu* photons = nullptr, const Image* environment = nullptr);
 
 // GPU pass; needs a current GL 4.3 context and the frame's parameters in the ParamsBuffer. Field
 // textures come from `textures` in slot order.
@@ -37,9 +38,11 @@ public:
     ~ViewPassGpu();
     // gradientTexture: the ∇n volume for curved rays (0 when the rays are straight). photons:
     // the smoothed photon volumes when setup.params.pipeline.y asks for them.
+    // environmentTexture: the environment image (render/environment_map.h) when
+    // setup.params.environment.x asks for one.
     Image render(const ViewSetup& setup, VolumeTextures& textures, const LightVolumesGpu& lights,
                  unsigned gradientTexture, const PhotonRadianceGpu* photons = nullptr,
-                 GpuStageTimer* timer = nullptr);
+                 GpuStageTimer* timer = nullptr, unsigned environmentTexture = 0);
 
 private:
     std::unique_ptr<ShaderProgram> program_;

@@ -10,7 +10,8 @@ namespace eikon {
 
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const std::vector<LightVolumeCpu>& lightVolumes,
-                    const std::vector<glm::vec4>& gradient, const PhotonRadianceCpu* photons) {
+                    const std::vector<glm::vec4>& gradient, const PhotonRadianceCpu* photons,
+                    const Image* environment) {
     const shared::GpuViewParams& p = setup.params;
     if (slotGrids.size() != setup.slotFields.size())
         throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
@@ -32,6 +33,12 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
             throw Error("view pass (CPU)", "photon lighting needs the photon volumes");
         kernel.photonRadiance = photons->radiance.data();
         kernel.photonDirection = photons->direction.data();
+    }
+    if (p.environment.x == EK_ENVIRONMENT_IMAGE) {
+        if (!environment || environment->width != p.environment.y ||
+            environment->height != p.environment.z)
+            throw Error("view pass (CPU)", "the environment image was not loaded");
+        kernel.environment = environment->pixels.data();
     }
     for (size_t s = 0; s < slotGrids.size(); ++s) {
         const glm::ivec3 res = slotGrids[s]->volume.resolution;

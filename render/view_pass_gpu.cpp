@@ -1,6 +1,7 @@
 #include <epoxy/gl.h>
 
 #include "core/error.h"
+#include "render/environment_map.h"
 #include "render/gpu_timer.h"
 #include "render/light_volume.h"
 #include "render/photon_radiance.h"
@@ -22,7 +23,8 @@ ViewPassGpu::~ViewPassGpu() {
 
 Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
                           const LightVolumesGpu& lights, unsigned gradientTexture,
-                          const PhotonRadianceGpu* photons, GpuStageTimer* timer) {
+                          const PhotonRadianceGpu* photons, GpuStageTimer* timer,
+                          unsigned environmentTexture) {
     const shared::GpuViewParams& p = setup.params;
     const int width = p.image.x, height = p.image.y;
     if (timer) timer->begin("view");
@@ -39,6 +41,10 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
     lights.bind();
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_3D, gradientTexture);
+    if (p.environment.x == EK_ENVIRONMENT_IMAGE && !environmentTexture)
+        throw Error("view pass", "the environment image was not uploaded");
+    glActiveTexture(GL_TEXTURE0 + kEnvironmentTextureUnit);
+    glBindTexture(GL_TEXTURE_2D, environmentTexture);
     glActiveTexture(GL_TEXTURE0);
     if (p.pipeline.y != 0) {
         if (!photons) throw Error("view pass", "photon lighting needs the photon volumes");

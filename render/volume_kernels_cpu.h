@@ -39,7 +39,17 @@ struct VolumeAccessCpu {
 };
 
 struct ViewKernelCpu : VolumeAccessCpu {
+    // The environment image (params.environment.y × z texels, row 0 at the top), when
+    // params.environment.x asks for it.
+    const vec4* environment = nullptr;
+    vec4 fetchEnvironment(ivec2 t) const {
+        return environment[size_t(t.y) * size_t(params.environment.y) + size_t(t.x)];
+    }
+
+    // clang-format off
+#include "shaders/shared/environment.h"
 #include "shaders/shared/view_march.h"
+    // clang-format on
 };
 
 struct LightKernelCpu : VolumeAccessCpu {

@@ -3,6 +3,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "volume_bindings.glsl"
+#include "shared/environment.h"
 #include "shared/view_march.h"
 
 layout(rgba32f, binding = 0) writeonly uniform image2D outImage;

@@ -1,5 +1,6 @@
 // Bindings every volume pass shares: the packed parameters, the field volumes and the light
-// transmittance volumes, and the fetch hook shaders/shared/sampling.h expects.
+// transmittance volumes, the environment image, and the fetch hooks shaders/shared/sampling.h and
+// shaders/shared/environment.h expect.
 //
 // Each kind lives in ONE 3D texture with its volumes stacked along z (slot s at z offset
 // s·resolution.z), so every fetch goes through one sampler: llvmpipe turns a sampler array
@@ -14,6 +15,8 @@ layout(binding = 2) uniform sampler3D gradientTex;  // RGBA32F: xyz = ∇n, w = 
 // Unit 3 is the photon pass's octree. The smoothed photon volumes (render/photon_radiance.h):
 layout(binding = 4) uniform sampler3D photonRadianceTex;   // RGBA32F: rgb = Σ flux·length
 layout(binding = 5) uniform sampler3D photonDirectionTex;  // RGBA32F: xyz = Σ weighted direction
+// The equirectangular environment image (RGBA32F), when params.environment.x asks for it.
+layout(binding = 6) uniform sampler2D environmentTex;
 
 ivec3 stackedVoxel(int slot, ivec3 voxel) {
     return ivec3(voxel.x, voxel.y, voxel.z + slot * params.resolution.z);
@@ -26,6 +29,9 @@ vec4 fetchVolume(int slot, ivec3 voxel) {
     if (slot == EK_PHOTON_DIRECTION_SLOT) return texelFetch(photonDirectionTex, voxel, 0);
     return texelFetch(lightTex, stackedVoxel(slot - EK_MAX_MATERIALS, voxel), 0);
 }
+
+// Exact texels: the shared code filters, so the GPU matches the CPU twin.
+vec4 fetchEnvironment(ivec2 texel) { return texelFetch(environmentTex, texel, 0); }
 
 #ifdef EK_HARDWARE_TRILINEAR
 // Trilinear filtering by the texture unit, one lookup instead of eight texelFetch: 2-3x faster on

@@ -19,6 +19,11 @@ EK_NAMESPACE_BEGIN
 #define EK_SHADOWS_MARCHED 1  // a ray marched toward the light from every sample (reference)
 #define EK_SHADOWS_SWEPT 2    // lookup in a light volume swept slice by slice (directional)
 
+// What a view ray sees when it leaves the volume (shaders/shared/environment.h).
+#define EK_ENVIRONMENT_COLOR 0     // background.rgb in every direction
+#define EK_ENVIRONMENT_GRADIENT 1  // zenith, horizon and ground colours blended by elevation
+#define EK_ENVIRONMENT_IMAGE 2     // an equirectangular image (fetchEnvironment) × intensity
+
 // fetchVolume slots after the fields (0..) and the light volumes: the ∇n volume (xyz = ∇n, w = n).
 #define EK_GRADIENT_SLOT (EK_MAX_MATERIALS + EK_MAX_LIGHTS)
 // The smoothed photon volumes (render/photon_radiance.h): rgb = Σ flux·length per voxel (power ×
@@ -55,6 +60,13 @@ struct GpuViewParams {
                          // y: 1 = in-scattering read from the photon volumes;
                          // z: bit l set = light l's light reaches the medium through the photon
                          //    volumes (not through its light volume); w: 0
+    // The environment (shaders/shared/environment.h). x: EK_ENVIRONMENT_*; y, z: the image's
+    // width and height in texels; w: 0.
+    ivec4 environment;
+    // Gradient: rgb zenith. Image: x intensity; y, z: cosine and sine of the rotation about +y.
+    vec4 environmentSky;
+    vec4 environmentHorizon;  // gradient: rgb horizon
+    vec4 environmentGround;   // gradient: rgb ground
     GpuMaterial materials[EK_MAX_MATERIALS];
     GpuLight lights[EK_MAX_LIGHTS];
 };

@@ -2,7 +2,8 @@
 // reaches the medium through the smoothed photon volumes (params.pipeline.z; light bent and
 // focused by refraction) or straight, with its transmittance (shadowing) taken from the light
 // volume (light_volume.h) or, as reference, marched toward the light from every sample (like
-// vdb_render). Needs optics.h.
+// vdb_render). Rays that leave the volume see environmentRadiance (environment.h). Needs optics.h
+// and environment.h.
 
 // Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0.
 float stepWeight(float kappa, float s) {
@@ -134,12 +135,11 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
     transmittance = vec3(1.0f);
     vec3 radiance = vec3(0.0f);
     const vec2 span = intersectVolume(origin, dir);
-    if (!(span.x < span.y)) return vec3(params.background);
+    if (!(span.x < span.y)) return environmentRadiance(dir);
     if (params.pipeline.x != 0) {
         vec3 exitDir;
         traceCurvedRay(origin + dir * span.x, dir, true, radiance, transmittance, exitDir);
-        // The background is a constant colour for now; exitDir will look up an environment.
-        return radiance + transmittance * vec3(params.background);
+        return radiance + transmittance * environmentRadiance(exitDir);
     }
     const float h = params.volumeMin.w;
     const int steps = min(int(ceil((span.y - span.x) / h)), EK_MAX_STEPS);
@@ -150,7 +150,7 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
         if (!accumulateStep(x, worldToVolumeIndex(x), dir, t1 - t0, radiance, transmittance))
             break;
     }
-    return radiance + transmittance * vec3(params.background);
+    return radiance + transmittance * environmentRadiance(dir);
 }
 
 // One pixel: a ray through the pixel's centre; rgb radiance, alpha the mean transmittance.

@@ -293,7 +293,7 @@ TEST_CASE("unknown keys are errors with a did-you-mean hint", "[scene]") {
     SECTION("no hint when nothing is close") {
         const Failure f = failureOf(sceneWith(R"("environment": {"zzzzzz": 1})"));
         CHECK_THAT(f.reason, !Contains("did you mean"));
-        CHECK_THAT(f.reason, Contains("expected one of: color"));
+        CHECK_THAT(f.reason, Contains("expected one of: type, color"));
     }
 }
 

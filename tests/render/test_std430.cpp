@@ -100,11 +100,13 @@ void addArray(Layout& layout, const std::string& prefix, size_t base, size_t str
 
 Layout viewParamsLayout() {
     Layout fields = {
-        EK_MEMBER(GpuViewParams, cameraOrigin), EK_MEMBER(GpuViewParams, cameraRight),
-        EK_MEMBER(GpuViewParams, cameraUp),     EK_MEMBER(GpuViewParams, cameraForward),
-        EK_MEMBER(GpuViewParams, volumeMin),    EK_MEMBER(GpuViewParams, volumeMax),
-        EK_MEMBER(GpuViewParams, resolution),   EK_MEMBER(GpuViewParams, image),
-        EK_MEMBER(GpuViewParams, background),   EK_MEMBER(GpuViewParams, pipeline)};
+        EK_MEMBER(GpuViewParams, cameraOrigin),       EK_MEMBER(GpuViewParams, cameraRight),
+        EK_MEMBER(GpuViewParams, cameraUp),           EK_MEMBER(GpuViewParams, cameraForward),
+        EK_MEMBER(GpuViewParams, volumeMin),          EK_MEMBER(GpuViewParams, volumeMax),
+        EK_MEMBER(GpuViewParams, resolution),         EK_MEMBER(GpuViewParams, image),
+        EK_MEMBER(GpuViewParams, background),         EK_MEMBER(GpuViewParams, pipeline),
+        EK_MEMBER(GpuViewParams, environment),        EK_MEMBER(GpuViewParams, environmentSky),
+        EK_MEMBER(GpuViewParams, environmentHorizon), EK_MEMBER(GpuViewParams, environmentGround)};
     addArray(fields, "materials", offsetof(GpuViewParams, materials), sizeof(GpuMaterial),
              EK_MAX_MATERIALS, materialLayout());
     addArray(fields, "lights", offsetof(GpuViewParams, lights), sizeof(GpuLight), EK_MAX_LIGHTS,
