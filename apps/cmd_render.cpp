@@ -6,6 +6,7 @@
 
 #include "apps/backend_choice.h"
 #include "apps/commands.h"
+#include "apps/frame_files.h"
 #include "apps/scene_input.h"
 #include "core/error.h"
 #include "core/scene.h"
@@ -30,22 +31,6 @@ struct RenderOptions {
     float shadowStep = 0.0f;
 };
 
-void parseFrames(const std::string& text, TimeSettings& time) {
-    int a = 0, b = 0;
-    char dash = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d", &a, &dash, &b) == 3 && dash == '-' && a >= 0 &&
-        b >= a) {
-        time.frameStart = a;
-        time.frameEnd = b;
-    } else if (std::sscanf(text.c_str(), "%d", &a) == 1 && a >= 0 &&
-               text.find('-') == std::string::npos) {
-        time.frameStart = time.frameEnd = a;
-    } else {
-        throw Error("--frames",
-                    "expected FIRST-LAST or one frame (e.g. 0-119), got '" + text + "'");
-    }
-}
-
 Scene sceneFor(const RenderOptions& o) {
     Scene scene = sceneFromInput(o.input, o.outputDir, o.size);
     if (!o.frames.empty()) parseFrames(o.frames, scene.time);
@@ -56,12 +41,6 @@ Scene sceneFor(const RenderOptions& o) {
     if (o.shadows == "swept") scene.render.shadows = ShadowMode::Swept;
     if (o.shadows == "marched") scene.render.shadows = ShadowMode::Marched;
     return scene;
-}
-
-std::string framePath(const Scene& scene, int frame, const char* ext) {
-    char number[16];
-    std::snprintf(number, sizeof(number), "_%04d.", frame);
-    return (fs::path(scene.output.directory) / (scene.output.name + number + ext)).string();
 }
 
 void printStats(const std::vector<StageTime>& stages, double writeMs, bool softwareGl) {
@@ -94,12 +73,14 @@ int runRender(const RenderOptions& o) {
         const Image image = renderer.render(frame);
         const auto t0 = std::chrono::steady_clock::now();
         if (scene.output.png) {
-            const std::string path = framePath(scene, frame, "png");
+            const std::string path =
+                framePath(scene.output.directory, scene.output.name, frame, "png");
             writePng(path, image, scene.render.exposure, scene.render.toneCurve);
             std::printf("wrote %s\n", path.c_str());
         }
         if (scene.output.exr) {
-            const std::string path = framePath(scene, frame, "exr");
+            const std::string path =
+                framePath(scene.output.directory, scene.output.name, frame, "exr");
             writeExr(path, image);
             std::printf("wrote %s\n", path.c_str());
         }

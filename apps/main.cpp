@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     eikon::app::addRenderCommand(app, exitCode);
     eikon::app::addDiffCommand(app, exitCode);
     eikon::app::addViewCommand(app, exitCode);
+    eikon::app::addSimulateCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

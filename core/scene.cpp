@@ -18,6 +18,8 @@
 #include "core/error.h"
 #include "core/field_registry.h"
 #include "core/json_reader.h"
+#include "core/scene_helpers.h"
+#include "core/scene_simulation.h"
 
 namespace eikon {
 
@@ -27,6 +29,8 @@ namespace fs = std::filesystem;
 using json::Object;
 using json::Range;
 using json::Value;
+using scene_detail::formatVec3;
+using scene_detail::resolveAgainst;
 
 // Limits of the format (docs/scene-format.md). Materials and lights are capped because the GPU
 // stages keep them in fixed-size uniform arrays.
@@ -43,12 +47,6 @@ constexpr double kMaxProceduralVoxelsAcross = 4096.0;
 const char* const kVec3Form = "an array of 3 numbers [x, y, z]";
 const char* const kColorForm = "an array of 3 numbers >= 0 [r, g, b]";
 
-std::string formatVec3(const glm::vec3& v) {
-    std::ostringstream out;
-    out << "[" << v.x << ", " << v.y << ", " << v.z << "]";
-    return out.str();
-}
-
 // Materials and procedural sources produce or read one scalar per voxel; velocity and color
 // are vector fields and cannot be.
 std::vector<std::string> scalarFieldNames() {
@@ -61,14 +59,6 @@ std::vector<std::string> scalarFieldNames() {
 
 glm::vec3 readColor(const Value& value) {
     return value.vec3(Range::atLeast(0.0));
-}
-
-// Relative paths in a scene are relative to the scene file, so that a scene and its caches can
-// move together.
-std::string resolveAgainst(const fs::path& sceneDirectory, const std::string& file) {
-    const fs::path path(file);
-    if (path.is_absolute() || sceneDirectory.empty()) return path.lexically_normal().string();
-    return (sceneDirectory / path).lexically_normal().string();
 }
 
 // ---- volume ----------------------------------------------------------------------------------
@@ -484,6 +474,7 @@ OutputSettings readOutput(const Value& value) {
     }
     if (auto name = object.optional("name")) {
         output.name = name->nonEmptyString();
+        output.nameSet = true;
         // The name is a file name prefix; folders belong in "directory".
         if (output.name.find_first_of("/\\") != std::string::npos) {
             name->failExpected("a file name without '/' or '\\' (put folders in \"directory\")");
@@ -533,6 +524,12 @@ Scene readScene(const Value& root, const std::string& file) {
     if (auto render = object.optional("render")) scene.render = readRender(*render);
     if (auto output = object.optional("output")) scene.output = readOutput(*output);
     if (auto time = object.optional("time")) scene.time = readTime(*time);
+    if (auto simulation = object.optional("simulation")) {
+        scene.simulation = readSimulation(*simulation, sceneDirectory);
+        // The cache takes the scene's output name when it has one, so that a scene's images and
+        // its simulation share a prefix.
+        if (scene.output.nameSet) scene.simulation->cacheName = scene.output.name;
+    }
     object.finish();
     return scene;
 }

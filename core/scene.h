@@ -5,6 +5,7 @@
 // "smoke.json:/lights/0/intensity". Relative file paths are resolved against the scene's folder.
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/bounds.h"
+#include "core/simulation_spec.h"
 
 namespace eikon {
 
@@ -129,10 +131,10 @@ enum class ToneCurve { Linear, Filmic };
 struct RenderSettings {
     int width = 640;
     int height = 480;
-    float stepVoxels = 1.0f;                 // view-ray step, in voxels of the render volume
-    float shadowStepVoxels = 3.0f;           // step toward the light
-    float minTransmittance = 1e-3f;          // a view ray stops when every channel is below this
-    float exposure = 0.0f;                   // stops; the tone map multiplies by 2^exposure
+    float stepVoxels = 1.0f;         // view-ray step, in voxels of the render volume
+    float shadowStepVoxels = 3.0f;   // step toward the light
+    float minTransmittance = 1e-3f;  // a view ray stops when every channel is below this
+    float exposure = 0.0f;           // stops; the tone map multiplies by 2^exposure
     ToneCurve toneCurve = ToneCurve::Filmic;
     ShadowMode shadows = ShadowMode::Swept;  // fastest, and most accurate at default steps
                                              // on smoke (BENCHMARKS.md)
@@ -143,6 +145,7 @@ struct RenderSettings {
 struct OutputSettings {
     std::string directory = "out";
     std::string name = "frame";  // files are <directory>/<name>_<frame 4 digits>.png / .exr
+    bool nameSet = false;        // the scene gave "name" (a simulation cache then takes it)
     bool png = true;
     bool exr = false;
 };
@@ -164,6 +167,7 @@ struct Scene {
     RenderSettings render;
     OutputSettings output;
     TimeSettings time;
+    std::optional<SmokeSimulationSpec> simulation;  // `eikon simulate` steps it
 };
 
 // Reads and validates a scene file. Throws eikon::Error naming the file and JSON path.

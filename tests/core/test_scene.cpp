@@ -75,10 +75,13 @@ TEST_CASE("every scene in data/scenes parses", "[scene]") {
         CHECK(scene.path == entry.path().string());
         CHECK_FALSE(scene.sources.empty());
         CHECK_FALSE(scene.materials.empty());
-        // VDB paths are resolved against the scene's folder, so they name real files.
+        // VDB paths are resolved against the scene's folder, so they name real files; a scene
+        // with a simulation renders the cache `eikon simulate` writes, which is not shipped.
         for (const eikon::SourceSpec& source : scene.sources) {
-            if (source.type == eikon::SourceType::Vdb ||
-                source.type == eikon::SourceType::VdbSequence) {
+            const bool simulated = scene.simulation && fs::path(source.file).parent_path() ==
+                                                           scene.simulation->cacheDirectory;
+            if (!simulated && (source.type == eikon::SourceType::Vdb ||
+                               source.type == eikon::SourceType::VdbSequence)) {
                 CHECK(fs::exists(source.file));
             }
         }
@@ -656,4 +659,157 @@ TEST_CASE("json reader helpers", "[scene]") {
     CHECK_FALSE(Range::openClosed(0, 90).contains(0.0));
 
     CHECK(eikon::json::appendPointer("/aliases", "a/b~c") == "/aliases/a~1b~0c");
+}
+
+// ---- simulation ------------------------------------------------------------------------------
+
+namespace {
+
+const std::string kSimulation = R"("simulation": {
+  "domain": {"min": [-1, 0, -1], "max": [1, 3, 1]},
+  "resolution": 24,
+  "walls": {"+y": "open", "-x": "closed"},
+  "cfl": 2, "max_substeps": 16,
+  "advection": "bfecc", "limiter": "clamp",
+  "buoyancy_alpha": 0.05, "buoyancy_beta": 2, "ambient_temperature": 1,
+  "vorticity": 1.5, "wind": [0.5, 0, 0],
+  "pressure": {"tolerance": 1e-4, "max_iterations": 200},
+  "sources": [{"type": "sphere", "center": [0, 0.4, 0], "radius": 0.3, "density_rate": 3,
+               "temperature_rate": 20, "velocity": [0, 1, 0], "velocity_rate": 10},
+              {"type": "box", "min": [-1, 0, -1], "max": [1, 0.1, 1]}],
+  "obstacles": [{"type": "sphere", "center": [0, 1.5, 0], "radius": 0.4},
+                {"type": "box", "min": [0.5, 2, 0.5], "max": [1, 2.5, 1]}],
+  "cache": "caches/plume"
+})";
+
+// sceneWith() plus a simulation section whose body is `body`.
+std::string simulationWith(const std::string& body) {
+    return sceneWith(R"("simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]},
+                     "resolution": 16)" +
+                     (body.empty() ? "" : ", " + body) + "}");
+}
+
+}  // namespace
+
+TEST_CASE("a simulation section parses into the smoke settings", "[scene][simulation]") {
+    SECTION("absent: no simulation") {
+        CHECK_FALSE(eikon::parseScene(sceneWith(""), "smoke.json").simulation);
+    }
+    SECTION("every key") {
+        const eikon::Scene scene = eikon::parseScene(
+            sceneWith(kSimulation + R"(, "output": {"name": "plume"})"), "scenes/smoke.json");
+        REQUIRE(scene.simulation);
+        const eikon::SmokeSimulationSpec& sim = *scene.simulation;
+        // One integer: cells along the longest axis (y, 3 units), cubic cells elsewhere.
+        CHECK(sim.voxelSize == Approx(0.125f));
+        CHECK(sim.resolution == glm::ivec3(16, 24, 16));
+        CHECK(sim.domain.max == glm::vec3(1, 3, 1));
+        CHECK(sim.walls[3] == eikon::SimWall::Open);
+        CHECK(sim.walls[0] == eikon::SimWall::Closed);
+        CHECK(sim.walls[2] == eikon::SimWall::Closed);
+        CHECK(sim.cfl == 2.0);
+        CHECK(sim.maxSubsteps == 16);
+        CHECK(sim.advection == eikon::SimAdvection::Bfecc);
+        CHECK(sim.limiter == eikon::SimLimiter::Clamp);
+        CHECK(sim.buoyancyAlpha == 0.05f);
+        CHECK(sim.buoyancyBeta == 2.0f);
+        CHECK(sim.ambientTemperature == 1.0f);
+        CHECK(sim.vorticity == 1.5f);
+        CHECK(sim.wind == glm::vec3(0.5f, 0, 0));
+        CHECK(sim.pressureTolerance == 1e-4);
+        CHECK(sim.pressureMaxIterations == 200);
+        REQUIRE(sim.sources.size() == 2);
+        CHECK(sim.sources[0].shape.kind == eikon::SimShapeSpec::Kind::Sphere);
+        CHECK(sim.sources[0].shape.radius == 0.3f);
+        CHECK(sim.sources[0].densityRate == 3.0f);
+        CHECK(sim.sources[0].temperatureRate == 20.0f);
+        CHECK(sim.sources[0].velocity == glm::vec3(0, 1, 0));
+        CHECK(sim.sources[0].velocityRate == 10.0f);
+        CHECK(sim.sources[1].shape.kind == eikon::SimShapeSpec::Kind::Box);
+        CHECK(sim.sources[1].densityRate == 1.0f);  // the default
+        REQUIRE(sim.obstacles.size() == 2);
+        CHECK(sim.obstacles[1].boxMax == glm::vec3(1, 2.5f, 1));
+        CHECK(sim.cacheDirectory == (fs::path("scenes") / "caches" / "plume").string());
+        CHECK(sim.cacheName == "plume");  // from output.name
+    }
+    SECTION("defaults") {
+        const eikon::Scene scene = eikon::parseScene(simulationWith(""), "smoke.json");
+        REQUIRE(scene.simulation);
+        const eikon::SmokeSimulationSpec& sim = *scene.simulation;
+        const eikon::SmokeSimulationSpec model;
+        CHECK(sim.resolution == glm::ivec3(16));
+        CHECK(sim.voxelSize == Approx(1.0f / 16));
+        CHECK(sim.walls == model.walls);
+        CHECK(sim.advection == eikon::SimAdvection::MacCormack);
+        CHECK(sim.limiter == eikon::SimLimiter::Revert);
+        CHECK(sim.sources.empty());
+        CHECK(sim.obstacles.empty());
+        CHECK(sim.cacheDirectory == "cache");
+        CHECK(sim.cacheName == "smoke");  // no output.name
+    }
+    SECTION("three integers that give cubic cells") {
+        const eikon::Scene scene = eikon::parseScene(
+            sceneWith(R"("simulation": {"domain": {"min": [0, 0, 0], "max": [1, 2, 1]},
+                         "resolution": [8, 16, 8]})"),
+            "smoke.json");
+        CHECK(scene.simulation->resolution == glm::ivec3(8, 16, 8));
+        CHECK(scene.simulation->voxelSize == 0.125f);
+    }
+}
+
+TEST_CASE("simulation mistakes name their JSON path", "[scene][simulation]") {
+    SECTION("unknown key, with a hint") {
+        const Failure f = failureOf(simulationWith(R"("vorticty": 2)"));
+        CHECK(f.where == "smoke.json:/simulation/vorticty");
+        CHECK_THAT(f.reason, Contains("did you mean 'vorticity'?"));
+    }
+    SECTION("unknown key in a source") {
+        const Failure f =
+            failureOf(simulationWith(R"("sources": [{"type": "sphere", "densty_rate": 2}])"));
+        CHECK(f.where == "smoke.json:/simulation/sources/0/densty_rate");
+        CHECK_THAT(f.reason, Contains("unknown key 'densty_rate' for a sphere smoke source"));
+        CHECK_THAT(f.reason, Contains("did you mean 'density_rate'?"));
+    }
+    SECTION("wrong type") {
+        const Failure f = failureOf(simulationWith(R"("cfl": "fast")"));
+        CHECK(f.where == "smoke.json:/simulation/cfl");
+        CHECK_THAT(f.reason, Contains("expected a number > 0"));
+    }
+    SECTION("wrong type of wall") {
+        const Failure f = failureOf(simulationWith(R"("walls": {"+y": "opne"})"));
+        CHECK(f.where == "smoke.json:/simulation/walls/+y");
+        CHECK_THAT(f.reason, Contains("\"open\""));
+    }
+    SECTION("resolution out of range") {
+        const Failure f = failureOf(sceneWith(
+            R"("simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 1000})"));
+        CHECK(f.where == "smoke.json:/simulation/resolution");
+        CHECK_THAT(f.reason, Contains("expected an integer in [2, 512], got 1000"));
+    }
+    SECTION("resolution element out of range") {
+        const Failure f = failureOf(sceneWith(
+            R"("simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": [16, 0, 16]})"));
+        CHECK(f.where == "smoke.json:/simulation/resolution/1");
+    }
+    SECTION("resolution that does not give cubic cells") {
+        const Failure f = failureOf(sceneWith(
+            R"("simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": [16, 32, 16]})"));
+        CHECK(f.where == "smoke.json:/simulation/resolution");
+        CHECK_THAT(f.reason, Contains("cubes"));
+    }
+    SECTION("missing domain") {
+        const Failure f = failureOf(sceneWith(R"("simulation": {"resolution": 16})"));
+        CHECK(f.where == "smoke.json:/simulation/domain");
+        CHECK_THAT(f.reason, Contains("missing required key 'domain'"));
+    }
+    SECTION("advection scheme") {
+        const Failure f = failureOf(simulationWith(R"("advection": "mac_cormack")"));
+        CHECK(f.where == "smoke.json:/simulation/advection");
+        CHECK_THAT(f.reason, Contains("\"maccormack\""));
+    }
+    SECTION("inverted obstacle box") {
+        const Failure f = failureOf(simulationWith(
+            R"("obstacles": [{"type": "box", "min": [1, 1, 1], "max": [0, 0, 0]}])"));
+        CHECK(f.where == "smoke.json:/simulation/obstacles/0/max");
+    }
 }

@@ -3,65 +3,25 @@
 // a render that fails. Runs the built binary (the test target depends on it).
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "support/run_eikon.h"
 #include "support/test_paths.h"
 
+using eikon::test::quoted;
+using eikon::test::readFile;
+using eikon::test::runEikon;
+using eikon::test::RunResult;
 using eikon::test::scratchDir;
 using eikon::test::sharedData;
 using eikon::test::sourcePath;
+using eikon::test::writeFile;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct RunResult {
-    int exitCode = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string quoted(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void writeFile(const std::string& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
-
-// Runs `eikon <args>` (arguments already quoted), stdout and stderr to files in `dir`.
-RunResult runEikon(const std::string& args, const std::string& dir) {
-    const std::string binary = std::string(EIKON_BINARY_DIR) + "/apps/eikon";
-    REQUIRE(fs::exists(binary));
-    const std::string out = dir + "/stdout.txt";
-    const std::string err = dir + "/stderr.txt";
-    const std::string command =
-        quoted(binary) + " " + args + " >" + quoted(out) + " 2>" + quoted(err) + " </dev/null";
-    const int status = std::system(command.c_str());
-    RunResult r;
-    REQUIRE(status != -1);
-    REQUIRE(WIFEXITED(status));
-    r.exitCode = WEXITSTATUS(status);
-    r.out = readFile(out);
-    r.err = readFile(err);
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-}
 
 std::vector<std::string> lines(const std::string& text) {
     std::vector<std::string> out;

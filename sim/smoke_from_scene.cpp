@@ -1,0 +1,74 @@
+#include "sim/smoke_from_scene.h"
+
+namespace eikon::sim {
+namespace {
+
+SmokeShape shapeFrom(const SimShapeSpec& s) {
+    return s.kind == SimShapeSpec::Kind::Sphere ? SmokeShape::sphere(s.center, s.radius)
+                                                : SmokeShape::box(s.boxMin, s.boxMax);
+}
+
+AdvectionScheme schemeFrom(SimAdvection a) {
+    switch (a) {
+        case SimAdvection::SemiLagrangian:
+            return AdvectionScheme::SemiLagrangian;
+        case SimAdvection::MacCormack:
+            return AdvectionScheme::MacCormack;
+        case SimAdvection::Bfecc:
+            return AdvectionScheme::Bfecc;
+    }
+    return AdvectionScheme::MacCormack;
+}
+
+Limiter limiterFrom(SimLimiter l) {
+    switch (l) {
+        case SimLimiter::None:
+            return Limiter::None;
+        case SimLimiter::Clamp:
+            return Limiter::Clamp;
+        case SimLimiter::Revert:
+            return Limiter::Revert;
+    }
+    return Limiter::Revert;
+}
+
+}  // namespace
+
+SmokeSettings smokeSettingsFrom(const SmokeSimulationSpec& spec, double fps) {
+    SmokeSettings s;
+    s.domain.resolution = spec.resolution;
+    s.domain.voxelSize = spec.voxelSize;
+    s.domain.origin = spec.domain.min;
+    for (std::size_t f = 0; f < 6; ++f) {
+        s.domain.walls[f] = spec.walls[f] == SimWall::Open ? Wall::Open : Wall::Closed;
+    }
+    s.fps = fps;
+    s.maxCfl = spec.cfl;
+    s.maxSubsteps = spec.maxSubsteps;
+    s.advection = {schemeFrom(spec.advection), limiterFrom(spec.limiter)};
+    s.forces.buoyancyAlpha = spec.buoyancyAlpha;
+    s.forces.buoyancyBeta = spec.buoyancyBeta;
+    s.forces.ambientTemperature = spec.ambientTemperature;
+    s.forces.vorticity = spec.vorticity;
+    s.forces.wind = spec.wind;
+    s.pressure.tolerance = spec.pressureTolerance;
+    s.pressure.maxIterations = spec.pressureMaxIterations;
+    return s;
+}
+
+SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps) {
+    SmokeSolver solver(smokeSettingsFrom(spec, fps));
+    for (const SmokeSourceSpec& src : spec.sources) {
+        SmokeSource source;
+        source.shape = shapeFrom(src.shape);
+        source.densityRate = src.densityRate;
+        source.temperatureRate = src.temperatureRate;
+        source.velocity = src.velocity;
+        source.velocityRate = src.velocityRate;
+        solver.addSource(source);
+    }
+    for (const SimShapeSpec& obstacle : spec.obstacles) solver.addObstacle(shapeFrom(obstacle));
+    return solver;
+}
+
+}  // namespace eikon::sim
