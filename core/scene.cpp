@@ -19,6 +19,7 @@
 #include "core/field_registry.h"
 #include "core/json_reader.h"
 #include "core/scene_helpers.h"
+#include "core/scene_receivers.h"
 #include "core/scene_simulation.h"
 
 namespace eikon {
@@ -517,6 +518,7 @@ Scene readScene(const Value& root, const std::string& file) {
         readSources(object.required("sources", "a non-empty array of sources"), sceneDirectory);
     scene.materials = readMaterials(object.required("materials", "a non-empty array of materials"));
     if (auto lights = object.optional("lights")) scene.lights = readLights(*lights);
+    if (auto receivers = object.optional("receivers")) scene.receivers = readReceivers(*receivers);
     if (auto camera = object.optional("camera")) scene.camera = readCamera(*camera);
     if (auto environment = object.optional("environment")) {
         scene.environment = readEnvironment(*environment, sceneDirectory);

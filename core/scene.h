@@ -106,6 +106,26 @@ struct EnvironmentSpec {
     float rotationDeg = 0.0f;
 };
 
+// A diffuse receiver (Sun et al. 2008 §5.5 floors and walls): an axis-aligned plane across the
+// render volume, opaque from both sides, that shows the light reaching its front face (caustics
+// and shadows). Photons stop on it; its front face (the side `facing` points to) reflects
+// albedo/π × irradiance toward the camera, its back face is black. Method Plane gathers the flux
+// of the photons crossing it into a map of `texelsPerVoxel` texels per voxel edge (sharp);
+// Voxels reads the photon volumes beside it, as Sun et al.'s voxel floors do (blurred by the
+// volume's resolution and smoothing). Lights that reach the medium straight (no photons) light
+// it through their light volumes either way.
+enum class ReceiverMethod { Plane, Voxels };
+
+struct ReceiverSpec {
+    int axis = 1;            // 0 = x, 1 = y, 2 = z: the plane's normal axis
+    float position = 0.0f;   // the plane's coordinate on that axis, inside the render volume
+    int facing = 1;          // +1: the front faces +axis; −1: −axis
+    glm::vec3 albedo{0.8f};  // diffuse reflectance per channel, in [0, 1]
+    ReceiverMethod method = ReceiverMethod::Plane;
+    int texelsPerVoxel = 2;  // Plane: map texels along each voxel edge
+    std::string jsonPath;    // e.g. "/receivers/0", for messages raised after parsing
+};
+
 // Where the viewing pass gets a light's transmittance: a volume computed once per change of
 // lights or extinction by marching from every voxel (camera moves reuse it); the same volume
 // swept slice by slice for directional lights (faster, blurs shadow edges); or a ray marched
@@ -162,6 +182,7 @@ struct Scene {
     std::vector<SourceSpec> sources;
     std::vector<MaterialSpec> materials;
     std::vector<LightSpec> lights;
+    std::vector<ReceiverSpec> receivers;
     CameraSpec camera;
     EnvironmentSpec environment;
     RenderSettings render;

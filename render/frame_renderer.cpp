@@ -84,6 +84,10 @@ std::vector<unsigned char> lightVolumeInputs(const ViewSetup& setup,
     p.background = glm::vec4(0.0f);
     p.environment = glm::ivec4(0);
     p.environmentSky = p.environmentHorizon = p.environmentGround = glm::vec4(0.0f);
+    // Receivers stop photons but not the straight light of light volumes; their albedo only
+    // shades the view.
+    p.pipeline.w = 0;
+    for (shared::GpuReceiver& r : p.receivers) r = shared::GpuReceiver{};
     std::vector<unsigned char> key;
     appendBytes(key, &p, sizeof(p));
     appendVersions(key, grids);
@@ -95,6 +99,10 @@ std::vector<unsigned char> photonInputs(const ViewSetup& setup,
                                         const std::vector<const DenseGrid*>& grids,
                                         const PhotonSettings& settings) {
     std::vector<unsigned char> key = lightVolumeInputs(setup, grids);
+    for (int r = 0; r < setup.params.pipeline.w; ++r) {
+        appendBytes(key, &setup.params.receivers[r].plane, sizeof(glm::vec4));
+        appendBytes(key, &setup.params.receivers[r].texels, sizeof(glm::ivec4));
+    }
     appendBytes(key, &settings.photonsPerSide, sizeof(settings.photonsPerSide));
     appendBytes(key, &settings.minStepVoxels, sizeof(settings.minStepVoxels));
     appendBytes(key, &settings.fluxThreshold, sizeof(settings.fluxThreshold));

@@ -32,8 +32,9 @@ class VolumeTextures;
 PhotonSettings photonSettingsFor(const Scene& scene);
 
 struct PhotonRadianceCpu {
-    std::vector<glm::vec4> radiance;   // smoothed; rgb = Σ flux·length (see photon_tracing.h)
-    std::vector<glm::vec4> direction;  // smoothed; xyz = Σ luminance-weighted direction
+    std::vector<glm::vec4> radiance;     // smoothed; rgb = Σ flux·length (see photon_tracing.h)
+    std::vector<glm::vec4> direction;    // smoothed; xyz = Σ luminance-weighted direction
+    std::vector<glm::vec4> receiverMap;  // irradiance per receiver texel (render/receiver_map.h)
     PhotonTotals totals;
     int64_t steps = 0;          // photon steps taken by the trace
     int64_t photonsTraced = 0;  // photons that entered the box
@@ -60,7 +61,7 @@ public:
                  const RefractionVolumesGpu& refraction, const PhotonSettings& settings,
                  GpuStageTimer* timer);
     // Binds the smoothed radiance and direction volumes to texture units 4 and 5
-    // (shaders/volume_bindings.glsl).
+    // (shaders/volume_bindings.glsl), and the receiver map to SSBO binding 8.
     void bind() const;
     // Photon steps of the last compute (read back: 8 bytes).
     int64_t lastSteps() const;
@@ -69,12 +70,14 @@ public:
 
 private:
     void allocate(glm::ivec3 resolution);
+    void uploadReceiverMap(const std::vector<glm::vec4>& map);
 
     std::unique_ptr<PhotonTracerGpu> tracer_;
     std::unique_ptr<VolumeSmootherGpu> smoother_;
     std::unique_ptr<ShaderProgram> resolve_;
     unsigned raw_[2] = {0, 0};       // radiance, direction before smoothing
     unsigned smoothed_[2] = {0, 0};  // after
+    unsigned receiverMap_ = 0;       // SSBO: vec4 irradiance per receiver map texel
     glm::ivec3 resolution_{0};
 };
 

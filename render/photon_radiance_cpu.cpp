@@ -23,6 +23,7 @@ PhotonRadianceCpu computePhotonRadianceCpu(const ViewSetup& setup,
     out.radiance = smoothVolumeCpu(traced.radiance, traced.resolution);
     out.direction = smoothVolumeCpu(traced.direction, traced.resolution);
     out.totals = traced.totals;
+    out.receiverMap = std::move(traced.receiverMap);
     out.steps = traced.steps;
     out.photonsTraced = traced.photonsTraced;
     return out;

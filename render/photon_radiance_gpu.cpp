@@ -1,5 +1,7 @@
 #include <epoxy/gl.h>
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "render/gpu_timer.h"
 #include "render/photon_radiance.h"
@@ -15,6 +17,7 @@ namespace {
 constexpr GLuint kDepositBinding = 5;  // shaders/photon_resolve.comp
 constexpr GLuint kRadianceUnit = 4;    // shaders/volume_bindings.glsl
 constexpr GLuint kDirectionUnit = 5;
+constexpr GLuint kReceiverMapBinding = 8;  // shaders/view_straight.comp
 
 std::vector<glm::vec4> downloadVolume(unsigned texture, glm::ivec3 res) {
     std::vector<glm::vec4> out(size_t(res.x) * size_t(res.y) * size_t(res.z));
@@ -35,6 +38,7 @@ PhotonRadianceGpu::PhotonRadianceGpu(bool exactMath)
 PhotonRadianceGpu::~PhotonRadianceGpu() {
     glDeleteTextures(2, raw_);
     glDeleteTextures(2, smoothed_);
+    if (receiverMap_) glDeleteBuffers(1, &receiverMap_);
 }
 
 void PhotonRadianceGpu::allocate(glm::ivec3 res) {
@@ -83,6 +87,7 @@ void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
     smoother_->smooth(raw_[0], smoothed_[0], res);
     smoother_->smooth(raw_[1], smoothed_[1], res);
     if (timer) timer->end();
+    uploadReceiverMap(tracer_->receiverMap());
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
         throw Error("photon radiance", "OpenGL error " + std::to_string(err));
 }
@@ -93,6 +98,18 @@ void PhotonRadianceGpu::bind() const {
     glActiveTexture(GL_TEXTURE0 + kDirectionUnit);
     glBindTexture(GL_TEXTURE_3D, smoothed_[1]);
     glActiveTexture(GL_TEXTURE0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kReceiverMapBinding, receiverMap_);
+}
+
+// The map is read back and converted on the host by the twin's own code (a few hundred KB, once
+// per photon trace), then uploaded for the view pass.
+void PhotonRadianceGpu::uploadReceiverMap(const std::vector<glm::vec4>& map) {
+    if (!receiverMap_) glGenBuffers(1, &receiverMap_);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, receiverMap_);
+    const glm::vec4 none(0.0f);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<size_t>(map.size(), 1) * 16),
+                 map.empty() ? &none : map.data(), GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
 int64_t PhotonRadianceGpu::lastSteps() const {
@@ -105,6 +122,7 @@ PhotonRadianceCpu PhotonRadianceGpu::download() const {
     out.radiance = downloadVolume(smoothed_[0], resolution_);
     out.direction = downloadVolume(smoothed_[1], resolution_);
     out.totals = traced.totals;
+    out.receiverMap = traced.receiverMap;
     out.steps = traced.steps;
     out.photonsTraced = traced.photonsTraced;
     return out;

@@ -52,12 +52,15 @@ struct PhotonTotals {
     glm::dvec3 escaped{0.0};       // flux carried out through the box's faces
     glm::dvec3 extinguished{0.0};  // lost to e^(−κΔ): absorbed or scattered out
     glm::dvec3 dropped{0.0};       // left in photons removed below the threshold or cut
+    glm::dvec3 received{0.0};      // carried onto a receiver (front or back face)
 };
 
 struct PhotonResultCpu {
     glm::ivec3 resolution{0};
     std::vector<glm::vec4> radiance;   // rgb: Σ flux·length; w: 0
     std::vector<glm::vec4> direction;  // xyz: Σ luminance(flux·length) × unit direction; w: 0
+    // Irradiance (rgb) per texel of the receivers' front faces (render/receiver_map.h).
+    std::vector<glm::vec4> receiverMap;
     PhotonTotals totals;
     glm::dvec4 fixedPointScale{0.0};  // rgb: radiance channels; w: direction (see above)
     int64_t steps = 0;                // photon steps taken, all photons

@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "render/photon_tracing.h"
+#include "render/receiver_map.h"
 #include "render/volume_kernels_cpu.h"
 
 EK_NAMESPACE_BEGIN
@@ -18,7 +19,9 @@ struct PhotonKernelCpu : VolumeAccessCpu {
     static constexpr int kDepositChannels = 6;
     const vec4* octree = nullptr;
     std::atomic<int64_t>* deposits = nullptr;
-    dvec4 scale = dvec4(0.0);  // rgb: flux·length channels; w: direction
+    dvec4 scale = dvec4(0.0);                          // rgb: flux·length channels; w: direction
+    std::atomic<int64_t>* receiverDeposits = nullptr;  // 3 per receiver map texel: r, g, b
+    dvec3 receiverScale = dvec3(0.0);                  // the totals' per-channel scales
 
     vec4 fetchOctree(ivec3 v) const { return octree[voxelIndex(v)]; }
 
@@ -36,6 +39,12 @@ struct PhotonKernelCpu : VolumeAccessCpu {
             cell[c].fetch_add(toFixed(fluxLength[c], scale[c]), std::memory_order_relaxed);
             cell[3 + c].fetch_add(toFixed(weightedDir[c], scale.w), std::memory_order_relaxed);
         }
+    }
+
+    void depositReceiverTexel(int index, vec3 flux) const {
+        std::atomic<int64_t>* texel = receiverDeposits + size_t(index) * 3;
+        for (int c = 0; c < 3; ++c)
+            texel[c].fetch_add(toFixed(flux[c], receiverScale[c]), std::memory_order_relaxed);
     }
 
     // clang-format off
@@ -60,6 +69,7 @@ struct FixedTotals {
     std::atomic<int64_t> escaped[3] = {};
     std::atomic<int64_t> extinguished[3] = {};
     std::atomic<int64_t> dropped[3] = {};
+    std::atomic<int64_t> received[3] = {};
     std::atomic<int64_t> steps{0};
     std::atomic<int64_t> cut{0};
 };
@@ -147,6 +157,13 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
     std::unique_ptr<std::atomic<int64_t>[]> deposits(new std::atomic<int64_t>[depositCount]);
     for (size_t i = 0; i < depositCount; ++i) deposits[i].store(0, std::memory_order_relaxed);
     kernel.deposits = deposits.get();
+    const size_t receiverSums = 3 * receiverMapTexels(setup.params);
+    std::unique_ptr<std::atomic<int64_t>[]> receiverDeposits(
+        new std::atomic<int64_t>[std::max<size_t>(receiverSums, 1)]);
+    for (size_t i = 0; i < receiverSums; ++i)
+        receiverDeposits[i].store(0, std::memory_order_relaxed);
+    kernel.receiverDeposits = receiverDeposits.get();
+    kernel.receiverScale = totalScale;
 
     // Step 5: each photon marched to its end by one task; the GPU may instead take one step of
     // all photons per dispatch (photonStep), which deposits the same segments.
@@ -165,8 +182,9 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
                     totals.extinguished[c].fetch_add(
                         shared::PhotonKernelCpu::toFixed(extinguished[c], totalScale[c]),
                         std::memory_order_relaxed);
-                    std::atomic<int64_t>& bin =
-                        state == EK_PHOTON_ESCAPED ? totals.escaped[c] : totals.dropped[c];
+                    std::atomic<int64_t>& bin = state == EK_PHOTON_ESCAPED    ? totals.escaped[c]
+                                                : state == EK_PHOTON_RECEIVED ? totals.received[c]
+                                                                              : totals.dropped[c];
                     bin.fetch_add(shared::PhotonKernelCpu::toFixed(left[c], totalScale[c]),
                                   std::memory_order_relaxed);
                 }
@@ -180,9 +198,14 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
         result.totals.escaped[c] = fromFixed(totals.escaped[c].load(), totalScale[c]);
         result.totals.extinguished[c] = fromFixed(totals.extinguished[c].load(), totalScale[c]);
         result.totals.dropped[c] = fromFixed(totals.dropped[c].load(), totalScale[c]);
+        result.totals.received[c] = fromFixed(totals.received[c].load(), totalScale[c]);
     }
     result.steps = totals.steps.load();
     result.photonsCut = totals.cut.load();
+
+    std::vector<int64_t> sums(receiverSums);
+    for (size_t i = 0; i < receiverSums; ++i) sums[i] = receiverDeposits[i].load();
+    result.receiverMap = receiverMapFromFixed(setup.params, sums, totalScale);
 
     result.radiance.resize(voxels);
     result.direction.resize(voxels);

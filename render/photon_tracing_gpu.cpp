@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "render/gpu_timer.h"
 #include "render/photon_tracing_gpu.h"
+#include "render/receiver_map.h"
 #include "render/shader_program.h"
 #include "render/volume_kernels_cpu.h"
 #include "render/volume_textures.h"
@@ -23,9 +24,11 @@ constexpr GLuint kGradientUnit = 2;  // volume_bindings.glsl's gradientTex
 constexpr GLuint kPhotonBinding = 4;
 constexpr GLuint kDepositBinding = 5;
 constexpr GLuint kTotalsBinding = 6;
+constexpr GLuint kReceiverBinding = 7;
 constexpr int kLocalSize = 64;
 constexpr int kDepositChannels = 6;  // r, g, b, weighted direction x, y, z
-constexpr int kTotalsCount = 11;     // escaped rgb, extinguished rgb, dropped rgb, steps, cut
+// escaped rgb, extinguished rgb, dropped rgb, steps, cut, received rgb
+constexpr int kTotalsCount = 14;
 
 constexpr double kFixedPointRange = 1099511627776.0;  // 2^40, see render/photon_tracing.h
 
@@ -99,7 +102,7 @@ PhotonTracerGpu::PhotonTracerGpu(bool exactMath) {
 }
 
 PhotonTracerGpu::~PhotonTracerGpu() {
-    for (GLuint* b : {&photons_, &deposits_, &totals_})
+    for (GLuint* b : {&photons_, &deposits_, &totals_, &receiverDeposits_})
         if (*b) glDeleteBuffers(1, b);
 }
 
@@ -120,6 +123,11 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
         resizeBuffer(deposits_, voxels * kDepositChannels * 2 * sizeof(GLuint));
         voxelCapacity_ = voxels;
     }
+    const size_t receiverTexels = receiverMapTexels(setup.params);
+    if (receiverTexels > receiverCapacity_ || !receiverDeposits_) {
+        resizeBuffer(receiverDeposits_, receiverTexels * 3 * 2 * sizeof(GLuint));
+        receiverCapacity_ = receiverTexels;
+    }
     if (glGetError() != GL_NO_ERROR)
         throw Error("photon tracing", "the driver refused the buffers for " +
                                           std::to_string(photonCount) + " photons and " +
@@ -135,6 +143,7 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhotonBinding, photons_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepositBinding, deposits_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTotalsBinding, totals_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kReceiverBinding, receiverDeposits_);
 
     // Step 4: generate every light's photons, in the layouts the plan chose on the host.
     generate_->use();
@@ -172,6 +181,7 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     // Step 5: every photon marched to its end by one invocation.
     clearBuffer(deposits_);
     clearBuffer(totals_);
+    clearBuffer(receiverDeposits_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     trace_->use();
     trace_->setFloat("minStep", plan.minStep);
@@ -185,6 +195,17 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
 
     host.photons.resize(photonCount);  // filled by download()
     host_ = std::move(host);
+    params_ = setup.params;
+}
+
+std::vector<glm::vec4> PhotonTracerGpu::receiverMap() const {
+    const size_t sums = 3 * receiverMapTexels(params_);
+    const std::vector<GLuint> words = readBuffer<GLuint>(receiverDeposits_, 2 * sums);
+    std::vector<int64_t> fixed(sums);
+    for (size_t i = 0; i < sums; ++i) fixed[i] = joinWords(&words[2 * i]);
+    const glm::dvec3 e = host_.totals.emitted;
+    return receiverMapFromFixed(
+        params_, fixed, glm::dvec3(scaleFor(e.x, 1.0), scaleFor(e.y, 1.0), scaleFor(e.z, 1.0)));
 }
 
 int64_t PhotonTracerGpu::stepsTaken() const {
@@ -212,6 +233,9 @@ PhotonResultCpu PhotonTracerGpu::download() const {
     }
     r.steps = joinWords(&totals[18]);
     r.photonsCut = joinWords(&totals[20]);
+    for (int c = 0; c < 3; ++c)
+        r.totals.received[c] = fromFixed(joinWords(&totals[22 + 2 * c]), totalScale[c]);
+    r.receiverMap = receiverMap();
 
     const std::vector<GLuint> words = readBuffer<GLuint>(deposits_, voxels * kDepositChannels * 2);
     r.radiance.assign(voxels, glm::vec4(0.0f));

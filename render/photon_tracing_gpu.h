@@ -33,6 +33,8 @@ public:
 
     // The last trace's results, in the CPU twin's structure and units.
     PhotonResultCpu download() const;
+    // The last trace's receiver map (render/receiver_map.h; reads back its fixed-point sums).
+    std::vector<glm::vec4> receiverMap() const;
     // Photon steps of the last trace (reads back one int64).
     int64_t stepsTaken() const;
     // For the passes that read the deposits on the GPU (render/photon_radiance_gpu.cpp): the
@@ -44,12 +46,15 @@ public:
 private:
     std::unique_ptr<ShaderProgram> generate_;
     std::unique_ptr<ShaderProgram> trace_;
-    unsigned photons_ = 0;   // SSBO: shared::GpuPhoton per photon
-    unsigned deposits_ = 0;  // SSBO: 6 int64 (low, high uint words) per voxel
-    unsigned totals_ = 0;    // SSBO: 11 int64, see shaders/photon_trace.comp
+    unsigned photons_ = 0;           // SSBO: shared::GpuPhoton per photon
+    unsigned deposits_ = 0;          // SSBO: 6 int64 (low, high uint words) per voxel
+    unsigned totals_ = 0;            // SSBO: 14 int64, see shaders/photon_trace.comp
+    unsigned receiverDeposits_ = 0;  // SSBO: 3 int64 (low, high words) per receiver map texel
     size_t photonCapacity_ = 0;
     size_t voxelCapacity_ = 0;
+    size_t receiverCapacity_ = 0;
     PhotonResultCpu host_;  // what the trace knows on the host: scales, emitted power, counts
+    shared::GpuViewParams params_{};  // the last trace's, for the receiver map's layout
 };
 
 }  // namespace eikon

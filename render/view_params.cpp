@@ -66,6 +66,38 @@ void packEnvironment(const Scene& scene, glm::ivec2 imageSize, shared::GpuViewPa
     }
 }
 
+// Receivers: the planes, their map layouts (plane receivers: texelsPerVoxel texels along each
+// voxel edge of the two in-plane axes; voxel receivers need no map) and their count in
+// pipeline.w. A plane must cut the volume, or nothing could ever reach it.
+void packReceivers(const Scene& scene, const RenderVolume& volume, shared::GpuViewParams& p) {
+    if (scene.receivers.size() > EK_MAX_RECEIVERS)
+        throw Error(scene.path + ":/receivers",
+                    "at most " + std::to_string(EK_MAX_RECEIVERS) + " receivers are supported");
+    int offset = 0;
+    for (size_t r = 0; r < scene.receivers.size(); ++r) {
+        const ReceiverSpec& spec = scene.receivers[r];
+        const float lo = volume.bounds.min[spec.axis];
+        const float hi = volume.bounds.max[spec.axis];
+        if (!(spec.position > lo && spec.position < hi)) {
+            const char* axes = "xyz";
+            throw Error(scene.path + ":" + spec.jsonPath + "/position",
+                        "expected a position strictly inside the render volume's " +
+                            std::string(1, axes[spec.axis]) + " range (" + std::to_string(lo) +
+                            ", " + std::to_string(hi) + "), got " + std::to_string(spec.position));
+        }
+        shared::GpuReceiver& g = p.receivers[r];
+        const bool plane = spec.method == ReceiverMethod::Plane;
+        g.plane = glm::vec4(float(spec.axis), spec.position, float(spec.facing),
+                            plane ? EK_RECEIVER_PLANE : EK_RECEIVER_VOXELS);
+        g.albedo = v4(spec.albedo);
+        const int tpv = plane ? spec.texelsPerVoxel : 0;
+        g.texels = glm::ivec4(volume.resolution[(spec.axis + 1) % 3] * tpv,
+                              volume.resolution[(spec.axis + 2) % 3] * tpv, offset, 0);
+        offset += g.texels.x * g.texels.y;
+    }
+    p.pipeline.w = int(scene.receivers.size());
+}
+
 }  // namespace
 
 ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera,
@@ -109,6 +141,7 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     bool refracts = false;
     for (const MaterialSpec& mat : scene.materials) refracts = refracts || mat.ior != 1.0f;
     p.pipeline = glm::ivec4(refracts ? 1 : 0, 0, 0, 0);
+    packReceivers(scene, volume, p);
     if (scenePhotonsWanted(scene)) {
         for (size_t l = 0; l < scene.lights.size(); ++l)
             if (lightEmitsPhotons(scene.lights[l].type)) p.pipeline.z |= 1 << l;
@@ -127,11 +160,13 @@ bool scenePhotonsWanted(const Scene& scene) {
         refracts = refracts || mat.ior != 1.0f;
         scatters = scatters || glm::any(glm::greaterThan(mat.scattering, glm::vec3(0.0f)));
     }
+    // Photons matter where something scatters them toward the camera, or a receiver shows them.
+    const bool shown = scatters || !scene.receivers.empty();
     switch (scene.render.photons.mode) {
         case PhotonMode::On:
-            return scatters;
+            return shown;
         case PhotonMode::Auto:
-            return scatters && refracts;
+            return shown && refracts;
         case PhotonMode::Off:
             break;
     }

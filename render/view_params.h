@@ -22,9 +22,10 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
                         glm::ivec2 environmentSize = glm::ivec2(0));
 
 // Whether the viewing pass takes in-scattered light from photon volumes (scene.render.photons:
-// "on" when something scatters; "auto" when, besides, some material refracts, so that straight
-// light volumes would be wrong). makeViewSetup then sets params.pipeline.y and, in
-// pipeline.z, the lights that emit photons; the others keep their light volumes.
+// "on" when something scatters or a receiver shows the light; "auto" when, besides, some
+// material refracts, so that straight light volumes would be wrong). makeViewSetup then sets
+// params.pipeline.y and, in pipeline.z, the lights that emit photons; the others keep their light
+// volumes.
 bool scenePhotonsWanted(const Scene& scene);
 bool lightEmitsPhotons(LightType type);
 

@@ -3,6 +3,7 @@
 
 #include "core/error.h"
 #include "render/photon_radiance.h"
+#include "render/receiver_map.h"
 #include "render/view_pass.h"
 #include "render/volume_kernels_cpu.h"
 
@@ -33,6 +34,9 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
             throw Error("view pass (CPU)", "photon lighting needs the photon volumes");
         kernel.photonRadiance = photons->radiance.data();
         kernel.photonDirection = photons->direction.data();
+        if (photons->receiverMap.size() != receiverMapTexels(p))
+            throw Error("view pass (CPU)", "the receiver map was not computed");
+        kernel.receiverMap = photons->receiverMap.data();
     }
     if (p.environment.x == EK_ENVIRONMENT_IMAGE) {
         if (!environment || environment->width != p.environment.y ||

@@ -35,6 +35,7 @@ struct VolumeAccessCpu {
     // clang-format off
 #include "shaders/shared/sampling.h"
 #include "shaders/shared/optics.h"
+#include "shaders/shared/receivers.h"
     // clang-format on
 };
 
@@ -45,6 +46,9 @@ struct ViewKernelCpu : VolumeAccessCpu {
     vec4 fetchEnvironment(ivec2 t) const {
         return environment[size_t(t.y) * size_t(params.environment.y) + size_t(t.x)];
     }
+    // The receiver map (render/receiver_map.h), when a receiver reads photons.
+    const vec4* receiverMap = nullptr;
+    vec4 fetchReceiverTexel(int index) const { return receiverMap[size_t(index)]; }
 
     // clang-format off
 #include "shaders/shared/environment.h"

@@ -123,6 +123,7 @@ vec3 ekExpf(vec3 x) {
 // The hooks photons.h calls, declared before it and defined after (they need its struct).
 vec4 fetchOctree(ivec3 voxel);
 void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir);
+void depositReceiverTexel(int index, vec3 flux);
 
 #include "shared/photons.h"
 
@@ -135,8 +136,10 @@ layout(std430, binding = 4) buffer PhotonBlock { GpuPhoton photons[]; };
 // Per voxel (x fastest) 6 int64 sums as (low, high) word pairs: r, g, b, then the weighted
 // direction x, y, z.
 layout(std430, binding = 5) buffer DepositBlock { uint deposits[]; };
-// int64 pairs: escaped rgb, extinguished rgb, dropped rgb, steps, cut photons.
+// int64 pairs: escaped rgb, extinguished rgb, dropped rgb, steps, cut photons, received rgb.
 layout(std430, binding = 6) buffer TotalsBlock { uint totals[]; };
+// Per receiver map texel (render/receiver_map.h) 3 int64 flux sums as (low, high) word pairs.
+layout(std430, binding = 7) buffer ReceiverBlock { uint receiverDeposits[]; };
 
 uniform int lightIndex;
 uniform int lightGrid;  // EK_PHOTON_GRID_*
@@ -198,6 +201,13 @@ void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir) {
     }
 }
 
+void depositReceiverTexel(int index, vec3 flux) {
+    for (int c = 0; c < 3; ++c) {
+        const uvec2 f = toFixed(flux[c], totalScale[c]);
+        EK_ADD_FIXED(receiverDeposits, index * 6 + 2 * c, f);
+    }
+}
+
 void main() {
     if (int(gl_GlobalInvocationID.x) >= photonCount) return;
     const int i = photonFirst + int(gl_GlobalInvocationID.x);
@@ -210,9 +220,10 @@ void main() {
     vec3 extinguished = vec3(0.0f);
     tracePhoton(p, minStep, maxSteps, extinguished);
     photons[i] = p;
-    // The CPU twin's per-photon bookkeeping: the flux left in the photon is escaped or dropped.
+    // The CPU twin's per-photon bookkeeping: the flux left in the photon is escaped, received or
+    // dropped.
     const int state = int(p.position.w);
-    const int leftAt = state == EK_PHOTON_ESCAPED ? 0 : 12;
+    const int leftAt = state == EK_PHOTON_ESCAPED ? 0 : state == EK_PHOTON_RECEIVED ? 22 : 12;
     for (int c = 0; c < 3; ++c) {
         const uvec2 e = toFixed(extinguished[c], totalScale[c]);
         EK_ADD_FIXED(totals, 6 + 2 * c, e);

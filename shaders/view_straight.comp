@@ -3,6 +3,11 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "volume_bindings.glsl"
+
+// The receiver map (render/receiver_map.h): rgb irradiance per texel of every plane receiver.
+layout(std430, binding = 8) readonly buffer ReceiverMapBlock { vec4 receiverTexels[]; };
+vec4 fetchReceiverTexel(int index) { return receiverTexels[index]; }
+
 #include "shared/environment.h"
 #include "shared/view_march.h"
 

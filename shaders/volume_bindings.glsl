@@ -55,3 +55,4 @@ vec4 filterVolume(int slot, vec3 indexPos) {
 
 #include "shared/sampling.h"
 #include "shared/optics.h"
+#include "shared/receivers.h"

@@ -9,6 +9,7 @@ EK_NAMESPACE_BEGIN
 
 #define EK_MAX_MATERIALS 4
 #define EK_MAX_LIGHTS 4
+#define EK_MAX_RECEIVERS 4
 
 #define EK_LIGHT_POINT 0
 #define EK_LIGHT_DIRECTIONAL 1
@@ -23,6 +24,10 @@ EK_NAMESPACE_BEGIN
 #define EK_ENVIRONMENT_COLOR 0     // background.rgb in every direction
 #define EK_ENVIRONMENT_GRADIENT 1  // zenith, horizon and ground colours blended by elevation
 #define EK_ENVIRONMENT_IMAGE 2     // an equirectangular image (fetchEnvironment) × intensity
+
+// How a receiver (shaders/shared/receivers.h) learns the irradiance photons bring it.
+#define EK_RECEIVER_PLANE 0   // from the map of the flux of photons crossing the plane
+#define EK_RECEIVER_VOXELS 1  // from the photon volumes beside the plane (Sun et al.'s floors)
 
 // fetchVolume slots after the fields (0..) and the light volumes: the ∇n volume (xyz = ∇n, w = n).
 #define EK_GRADIENT_SLOT (EK_MAX_MATERIALS + EK_MAX_LIGHTS)
@@ -45,6 +50,15 @@ struct GpuLight {
     vec4 radiance;   // rgb: colour × intensity; w: cos(inner), where the spot edge starts
 };
 
+// A diffuse plane across the volume (core/scene.h ReceiverSpec). Its map has texels.x × texels.y
+// texels over the volume's extent along the plane's axes u = (axis + 1) % 3 (x fastest) and
+// w = (axis + 2) % 3, stored from index texels.z of the receiver map.
+struct GpuReceiver {
+    vec4 plane;   // x: normal axis (0, 1, 2); y: position on it; z: facing (±1); w: EK_RECEIVER_*
+    vec4 albedo;  // rgb: diffuse reflectance; w: unused
+    ivec4 texels;
+};
+
 // Everything the viewing pass needs besides the field textures.
 struct GpuViewParams {
     vec4 cameraOrigin;   // xyz; w: tan(horizontal fov / 2)
@@ -59,7 +73,7 @@ struct GpuViewParams {
     ivec4 pipeline;      // x: 1 = curved view rays through the ∇n volume, 0 = straight;
                          // y: 1 = in-scattering read from the photon volumes;
                          // z: bit l set = light l's light reaches the medium through the photon
-                         //    volumes (not through its light volume); w: 0
+                         //    volumes (not through its light volume); w: receiver count
     // The environment (shaders/shared/environment.h). x: EK_ENVIRONMENT_*; y, z: the image's
     // width and height in texels; w: 0.
     ivec4 environment;
@@ -69,6 +83,7 @@ struct GpuViewParams {
     vec4 environmentGround;   // gradient: rgb ground
     GpuMaterial materials[EK_MAX_MATERIALS];
     GpuLight lights[EK_MAX_LIGHTS];
+    GpuReceiver receivers[EK_MAX_RECEIVERS];
 };
 
 EK_NAMESPACE_END

@@ -11,7 +11,10 @@
 //   vec4 fetchOctree(ivec3 voxel)   the octree volume (render/refraction_volume.h): x = level,
 //                                   y = Δs_max in scene units, z, w = n range;
 //   void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir)
-//                                   adds one segment piece to the radiance volume.
+//                                   adds one segment piece to the radiance volume;
+//   void depositReceiverTexel(int index, vec3 flux)
+//                                   adds flux (power) to texel `index` of the receiver map
+//                                   (receivers.h, which must be included before this file).
 //
 // Units. A directional light of irradiance E (GpuLight.radiance, power per unit area across the
 // beam) sends photons through an N×N grid of cells over the rectangle that the volume box
@@ -39,6 +42,7 @@
 #define EK_PHOTON_ESCAPED 2  // left the box; position and direction are its exit
 #define EK_PHOTON_DROPPED 3  // its flux fell below its threshold, or its march went degenerate
 #define EK_PHOTON_CUT 4      // still active after the step limit (a trapped path)
+#define EK_PHOTON_RECEIVED 5  // stopped on a receiver (receivers.h); position is the hit point
 
 // How a light's photons are laid out (photonGrid): N×N grids of cells, one photon per cell.
 #define EK_PHOTON_GRID_NONE 0      // a spot whose cone misses the box: no photons
@@ -386,6 +390,17 @@ float octreeLeafDistance(vec3 x, vec3 dir, EK_OUT(float) maxStep) {
     return max(t, 0.0f);
 }
 
+// Spreads flux arriving at world point x on receiver r's front face over the four map texels
+// around it with bilinear weights (a tent kernel one texel wide: each texel's sum estimates the
+// flux through its area with less noise than a point count, and no flux is lost at the edges).
+void depositOnReceiver(int r, vec3 x, vec3 flux) {
+    ivec4 index;
+    vec4 weight;
+    receiverBilinear(r, receiverMapCoord(r, x), index, weight);
+    for (int k = 0; k < 4; ++k)
+        if (weight[k] > 0.0f) depositReceiverTexel(index[k], flux * weight[k]);
+}
+
 // One adaptive step of an active photon (§1 step 5): Δs = clamp(Δs_octree, minStep, Δs_max), with
 // Δs_max winning where the two conflict (it is the accuracy the octree asks for there);
 // x += (Δs/n) v, v += Δs ∇n (rayStep's update, n and ∇n at x); the flux decays by e^(−κ|Δx|)
@@ -415,6 +430,14 @@ int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, EK_INOUT(vec3) extingu
         s = max(tExit, 0.0f);
         next = x + segmentDir * s;
     }
+    // A receiver in the way stops the photon on its plane; only its front face gathers flux.
+    float tHit;
+    bool front;
+    const int receiver = receiverCrossing(x, next, tHit, front);
+    if (receiver >= 0) {
+        next = receiverHitPoint(receiver, x, next, tHit);
+        s *= tHit;
+    }
     const vec3 flux = vec3(photon.flux);
     const vec3 kappa = extinctionAt(worldToVolumeIndex(0.5f * (x + next)));
     depositSegment(x, next, s, segmentDir, flux, kappa);
@@ -423,13 +446,19 @@ int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, EK_INOUT(vec3) extingu
     photon.position = vec4(next, photon.position.w);
     photon.direction = vec4(vNext, photon.direction.w + 1.0f);
     photon.flux = vec4(fluxNext, photon.flux.w);
+    if (receiver >= 0) {
+        // Voxel receivers have no map: the photon volumes beside them hold their light.
+        if (front && int(params.receivers[receiver].plane.w) == EK_RECEIVER_PLANE)
+            depositOnReceiver(receiver, next, fluxNext);
+        return EK_PHOTON_RECEIVED;
+    }
     if (leaves) return EK_PHOTON_ESCAPED;
     if (any(isnan(vNext)) || any(isinf(vNext))) return EK_PHOTON_DROPPED;  // a degenerate medium
     if (max(fluxNext.x, max(fluxNext.y, fluxNext.z)) < photon.flux.w) return EK_PHOTON_DROPPED;
     return EK_PHOTON_ACTIVE;
 }
 
-// Marches a photon until it escapes, is dropped, or has taken maxSteps steps (EK_PHOTON_CUT);
+// Marches a photon until it escapes, lands on a receiver, is dropped, or has taken maxSteps steps (EK_PHOTON_CUT);
 // the state is written to position.w. extinguished gets the flux lost on the way.
 void tracePhoton(EK_INOUT(GpuPhoton) photon, float minStep, int maxSteps,
                  EK_INOUT(vec3) extinguished) {

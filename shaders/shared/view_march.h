@@ -2,8 +2,10 @@
 // reaches the medium through the smoothed photon volumes (params.pipeline.z; light bent and
 // focused by refraction) or straight, with its transmittance (shadowing) taken from the light
 // volume (light_volume.h) or, as reference, marched toward the light from every sample (like
-// vdb_render). Rays that leave the volume see environmentRadiance (environment.h). Needs optics.h
-// and environment.h.
+// vdb_render). Rays that leave the volume see environmentRadiance (environment.h); rays that reach a
+// receiver (receivers.h) stop there and see its diffuse reflection. Needs optics.h, receivers.h,
+// environment.h and, from the includer, `vec4 fetchReceiverTexel(int index)`: the irradiance
+// (rgb) of a texel of the receiver map.
 
 // Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0.
 float stepWeight(float kappa, float s) {
@@ -27,6 +29,58 @@ vec3 photonInScattering(vec3 p, vec3 dir, vec3 sigma[EK_MAX_MATERIALS]) {
         scattered += sigma[m] * (directed ? phaseHG(params.materials[m].absorption.w, cosTheta)
                                           : 1.0f / (4.0f * EK_PI));
     return scattered * fluence;
+}
+
+// Light l's transmittance on its way to x (volume index position p): from its light volume, or
+// marched toward it (EK_SHADOWS_MARCHED, the reference).
+vec3 lightShadow(int l, vec3 x, vec3 p, vec3 toLight, float lightDistance) {
+    if (params.image.w == EK_SHADOWS_MARCHED) return transmittanceToward(x, toLight, lightDistance);
+    return vec3(sampleVolume(EK_MAX_MATERIALS + l, p));
+}
+
+// Irradiance on receiver r at x (on its plane) from the lights whose light comes as photons
+// (params.pipeline.z). Plane receivers read their map (the flux of the photons that crossed the
+// plane, per area); voxel receivers read the smoothed photon volumes 1.5 voxels in front of the
+// plane, where they are not yet cut by it: fluence rate times the net flux's cosine with the
+// normal, |Σ lum·dir| ≤ lum(Σ flux·length) making that factor a cosine in [0, 1].
+vec3 receiverPhotonIrradiance(int r, vec3 x) {
+    if (int(params.receivers[r].plane.w) == EK_RECEIVER_PLANE) {
+        ivec4 index;
+        vec4 weight;
+        receiverBilinear(r, receiverMapCoord(r, x), index, weight);
+        vec3 e = vec3(0.0f);
+        for (int k = 0; k < 4; ++k) e += weight[k] * vec3(fetchReceiverTexel(index[k]));
+        return e;
+    }
+    const vec3 normal = receiverNormal(r);
+    const vec3 p = worldToVolumeIndex(x) + 1.5f * normal;
+    const vec3 h = volumeVoxelSize();
+    const vec3 fluxLength = vec3(sampleVolume(EK_PHOTON_RADIANCE_SLOT, p));
+    const vec3 weightedDir = vec3(sampleVolume(EK_PHOTON_DIRECTION_SLOT, p));
+    const float lum = dot(fluxLength, vec3(0.2126f, 0.7152f, 0.0722f));
+    if (!(lum > 0.0f)) return vec3(0.0f);
+    const float cosine = clamp(-dot(weightedDir, normal) / lum, 0.0f, 1.0f);
+    return fluxLength / (h.x * h.y * h.z) * cosine;
+}
+
+// Radiance the front face of receiver r reflects toward the camera at x: albedo/π × the
+// irradiance of every light, through the photons or, for the other lights, straight with their
+// transmittance. Its back face is black.
+vec3 receiverRadiance(int r, vec3 x, bool front) {
+    if (!front) return vec3(0.0f);
+    vec3 irradiance = params.pipeline.z != 0 ? receiverPhotonIrradiance(r, x) : vec3(0.0f);
+    const vec3 normal = receiverNormal(r);
+    const vec3 p = worldToVolumeIndex(x);
+    for (int l = 0; l < params.image.z; ++l) {
+        if ((params.pipeline.z & (1 << l)) != 0) continue;  // in the photon map
+        vec3 toLight;
+        float lightDistance;
+        const vec3 e = lightIrradiance(l, x, toLight, lightDistance);
+        const float cosine = dot(toLight, normal);
+        if (!(cosine > 0.0f) || e.x + e.y + e.z <= 0.0f) continue;
+        irradiance += e * cosine * lightShadow(l, x, p, toLight, lightDistance);
+    }
+    return vec3(params.receivers[r].albedo) * (1.0f / EK_PI) * irradiance;
 }
 
 // Radiance reaching the camera along a ray, and the ray's transmittance through the volume.
@@ -60,12 +114,7 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
             vec3 scattered = vec3(0.0f);
             for (int m = 0; m < params.resolution.w; ++m)
                 scattered += sigma[m] * phaseHG(params.materials[m].absorption.w, cosTheta);
-            vec3 shadow;
-            if (params.image.w == EK_SHADOWS_MARCHED)
-                shadow = transmittanceToward(x, toLight, lightDistance);
-            else
-                shadow = vec3(sampleVolume(EK_MAX_MATERIALS + l, p));
-            source += scattered * irradiance * shadow;
+            source += scattered * irradiance * lightShadow(l, x, p, toLight, lightDistance);
         }
     }
     radiance += transmittance * source *
@@ -114,6 +163,13 @@ vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
             s = max(tExit, 0.0f);
             next = x + segmentDir * s;
         }
+        float tHit;
+        bool front;
+        const int receiver = receiverCrossing(x, next, tHit, front);
+        if (receiver >= 0) {
+            next = receiverHitPoint(receiver, x, next, tHit);
+            s *= tHit;
+        }
         if (shade) {
             const vec3 mid = 0.5f * (x + next);
             if (!accumulateStep(mid, worldToVolumeIndex(mid), segmentDir, s, radiance,
@@ -123,6 +179,11 @@ vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
         x = next;
         v = vNext;
         exitDir = normalize(v);
+        if (receiver >= 0) {  // opaque: nothing behind it shows
+            if (shade) radiance += transmittance * receiverRadiance(receiver, x, front);
+            transmittance = vec3(0.0f);
+            break;
+        }
         if (leaves) break;
     }
     return x;
@@ -145,10 +206,21 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
     const int steps = min(int(ceil((span.y - span.x) / h)), EK_MAX_STEPS);
     for (int i = 0; i < steps; ++i) {
         const float t0 = span.x + float(i) * h;
-        const float t1 = min(t0 + h, span.y);
+        const float tEnd = min(t0 + h, span.y);
+        float tHit;
+        bool front;
+        const int receiver = receiverCrossing(origin + dir * t0, origin + dir * tEnd, tHit, front);
+        const float t1 = receiver >= 0 ? t0 + (tEnd - t0) * tHit : tEnd;
         const vec3 x = origin + dir * (0.5f * (t0 + t1));
         if (!accumulateStep(x, worldToVolumeIndex(x), dir, t1 - t0, radiance, transmittance))
             break;
+        if (receiver >= 0) {  // opaque: nothing behind it shows
+            const vec3 hit =
+                receiverHitPoint(receiver, origin + dir * t0, origin + dir * tEnd, tHit);
+            radiance += transmittance * receiverRadiance(receiver, hit, front);
+            transmittance = vec3(0.0f);
+            break;
+        }
     }
     return radiance + transmittance * environmentRadiance(dir);
 }

@@ -8,6 +8,7 @@ layout(local_size_x = 64) in;
 // The hooks photons.h calls, declared before it and defined after (they need its struct).
 vec4 fetchOctree(ivec3 voxel);
 void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir);
+void depositReceiverTexel(int index, vec3 flux);
 
 #include "../shared/photons.h"
 
@@ -20,6 +21,8 @@ vec4 fetchOctree(ivec3 voxel) { return texelFetch(octreeTex, voxel, 0); }
 void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir) {
     atomicAdd(deposits[voxel.x], uint(fluxLength.x + weightedDir.x));
 }
+
+void depositReceiverTexel(int index, vec3 flux) { atomicAdd(deposits[index], uint(flux.x)); }
 
 void main() {
     const int i = int(gl_GlobalInvocationID.x);

@@ -813,3 +813,55 @@ TEST_CASE("simulation mistakes name their JSON path", "[scene][simulation]") {
         CHECK(f.where == "smoke.json:/simulation/obstacles/0/max");
     }
 }
+
+TEST_CASE("receivers parse with their defaults and name their mistakes", "[scene][receivers]") {
+    SECTION("a floor with defaults and a wall with every key") {
+        const eikon::Scene scene = eikon::parseScene(
+            sceneWith(R"("receivers": [{"type": "plane", "axis": "y", "position": -0.5},
+                {"type": "plane", "axis": "x", "position": 0.9, "facing": "-",
+                 "albedo": [0.2, 0.4, 0.6], "method": "voxels", "texels_per_voxel": 4}])"),
+            "smoke.json");
+        REQUIRE(scene.receivers.size() == 2);
+        const eikon::ReceiverSpec& floor = scene.receivers[0];
+        CHECK(floor.axis == 1);
+        CHECK(floor.position == -0.5f);
+        CHECK(floor.facing == 1);
+        CHECK(floor.albedo == glm::vec3(0.8f));
+        CHECK(floor.method == eikon::ReceiverMethod::Plane);
+        CHECK(floor.texelsPerVoxel == 2);
+        CHECK(floor.jsonPath == "/receivers/0");
+        const eikon::ReceiverSpec& wall = scene.receivers[1];
+        CHECK(wall.axis == 0);
+        CHECK(wall.facing == -1);
+        CHECK(wall.albedo == glm::vec3(0.2f, 0.4f, 0.6f));
+        CHECK(wall.method == eikon::ReceiverMethod::Voxels);
+        CHECK(wall.texelsPerVoxel == 4);
+    }
+    SECTION("unknown key, with a hint") {
+        const Failure f = failureOf(sceneWith(
+            R"("receivers": [{"type": "plane", "axis": "y", "position": 0, "albdo": [1, 1, 1]}])"));
+        CHECK(f.where == "smoke.json:/receivers/0/albdo");
+        CHECK_THAT(f.reason, Contains("did you mean 'albedo'?"));
+    }
+    SECTION("albedo above 1") {
+        const Failure f = failureOf(sceneWith(
+            R"("receivers": [{"type": "plane", "axis": "y", "position": 0, "albedo": [1, 1.5, 1]}])"));
+        CHECK(f.where == "smoke.json:/receivers/0/albedo/1");
+    }
+    SECTION("an axis that is not one") {
+        const Failure f =
+            failureOf(sceneWith(R"("receivers": [{"type": "plane", "axis": "w", "position": 0}])"));
+        CHECK(f.where == "smoke.json:/receivers/0/axis");
+        CHECK_THAT(f.reason, Contains("\"y\""));
+    }
+    SECTION("missing position") {
+        const Failure f = failureOf(sceneWith(R"("receivers": [{"type": "plane", "axis": "y"}])"));
+        CHECK(f.where == "smoke.json:/receivers/0/position");
+    }
+    SECTION("too many") {
+        const std::string one = R"({"type": "plane", "axis": "y", "position": 0})";
+        const Failure f = failureOf(sceneWith(R"("receivers": [)" + one + "," + one + "," + one +
+                                              "," + one + "," + one + "]"));
+        CHECK(f.where == "smoke.json:/receivers");
+    }
+}

@@ -26,6 +26,7 @@ EK_NAMESPACE_BEGIN
 struct PhotonTestKernel : VolumeAccessCpu {
     vec4 fetchOctree(ivec3) const { return vec4(0.0f); }
     void depositVoxel(ivec3, vec3, vec3) const {}
+    void depositReceiverTexel(int, vec3) const {}
 #include "shaders/shared/photons.h"
 };
 EK_NAMESPACE_END

@@ -18,21 +18,24 @@ namespace {
 
 using eikon::shared::GpuLight;
 using eikon::shared::GpuMaterial;
+using eikon::shared::GpuReceiver;
 using eikon::shared::GpuViewParams;
 
 // The rules the shared header promises: 16-byte members only, so C++ needs no padding rules.
 static_assert(sizeof(glm::vec4) == 16 && sizeof(glm::ivec4) == 16, "GLM vectors are packed");
 static_assert(std::is_standard_layout<GpuViewParams>::value, "offsetof needs standard layout");
 static_assert(std::is_trivially_copyable<GpuViewParams>::value, "uploaded with memcpy");
-static_assert(sizeof(GpuMaterial) % 16 == 0 && sizeof(GpuLight) % 16 == 0,
+static_assert(sizeof(GpuMaterial) % 16 == 0 && sizeof(GpuLight) % 16 == 0 &&
+                  sizeof(GpuReceiver) % 16 == 0,
               "std430 rounds a struct's array stride up to its 16-byte alignment; C++ must agree");
 static_assert(sizeof(GpuViewParams) % 16 == 0, "std430 rounds a block's size the same way");
 static_assert(offsetof(GpuViewParams, materials) % 16 == 0 &&
-                  offsetof(GpuViewParams, lights) % 16 == 0,
+                  offsetof(GpuViewParams, lights) % 16 == 0 &&
+                  offsetof(GpuViewParams, receivers) % 16 == 0,
               "struct arrays start 16-byte aligned in std430");
 static_assert(sizeof(GpuViewParams) ==
-                  offsetof(GpuViewParams, lights) + EK_MAX_LIGHTS * sizeof(GpuLight),
-              "GpuViewParams ends with lights[]: no trailing padding");
+                  offsetof(GpuViewParams, receivers) + EK_MAX_RECEIVERS * sizeof(GpuReceiver),
+              "GpuViewParams ends with receivers[]: no trailing padding");
 
 template <typename T>
 struct GlType;
@@ -87,6 +90,11 @@ Layout lightLayout() {
             EK_MEMBER(GpuLight, radiance)};
 }
 
+Layout receiverLayout() {
+    return {EK_MEMBER(GpuReceiver, plane), EK_MEMBER(GpuReceiver, albedo),
+            EK_MEMBER(GpuReceiver, texels)};
+}
+
 // Adds `inner` under "<prefix>[i].", i < count, at `base + i * stride`.
 void addArray(Layout& layout, const std::string& prefix, size_t base, size_t stride, int count,
               const Layout& inner) {
@@ -111,6 +119,8 @@ Layout viewParamsLayout() {
              EK_MAX_MATERIALS, materialLayout());
     addArray(fields, "lights", offsetof(GpuViewParams, lights), sizeof(GpuLight), EK_MAX_LIGHTS,
              lightLayout());
+    addArray(fields, "receivers", offsetof(GpuViewParams, receivers), sizeof(GpuReceiver),
+             EK_MAX_RECEIVERS, receiverLayout());
     Layout layout;
     for (const auto& [name, member] : fields) layout["params." + name] = member;
     return layout;
