@@ -2,6 +2,7 @@
 // non-zero exit, so scripts and users see what to fix without a stack trace.
 #include <cstdio>
 
+#include "apps/bench_report.h"
 #include "apps/commands.h"
 #include "core/error.h"
 
@@ -14,6 +15,8 @@ int main(int argc, char** argv) {
     eikon::app::addDiffCommand(app, exitCode);
     eikon::app::addViewCommand(app, exitCode);
     eikon::app::addSimulateCommand(app, exitCode);
+    eikon::app::addBenchCommand(app, exitCode);
+    eikon::app::setBenchCommandLine(eikon::app::joinCommandLine(argc, argv));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -238,7 +238,17 @@ MaterialSpec readMaterial(const Value& value) {
     }
     if (auto g = object.optional("g")) material.g = g->floatNumber(Range::open(-1.0, 1.0));
     if (auto emission = object.optional("emission")) material.emission = readColor(*emission);
-    if (auto ior = object.optional("ior")) material.ior = ior->floatNumber(Range::atLeast(1.0));
+    const auto ior = object.optional("ior");
+    if (ior) material.ior = ior->floatNumber(Range::atLeast(1.0));
+    if (auto gd = object.optional("gladstone_dale")) {
+        if (ior) gd->fail("give either \"ior\" or \"gladstone_dale\", not both");
+        material.gladstoneDale = gd->floatNumber(Range::greaterThan(0.0));
+        if (auto t = object.optional("ambient_kelvin"))
+            material.ambientKelvin = t->floatNumber(Range::greaterThan(0.0));
+        material.ior = 1.0f - material.gladstoneDale / material.ambientKelvin;
+    } else if (auto t = object.optional("ambient_kelvin")) {
+        t->fail("\"ambient_kelvin\" needs \"gladstone_dale\"");
+    }
     object.finish();
     return material;
 }

@@ -62,7 +62,17 @@ struct MaterialSpec {
     glm::vec3 scattering{0.0f};
     float g = 0.0f;  // Henyey–Greenstein anisotropy, in (−1, 1)
     glm::vec3 emission{0.0f};
-    float ior = 1.0f;  // ≥ 1; ≠ 1 bends the view rays (render/refraction_volume.h)
+    // ≥ 1 as a scene gives it; ≠ 1 bends the view rays (render/refraction_volume.h). Below 1 when
+    // the parser derives it from gladstoneDale.
+    float ior = 1.0f;
+    // Hot air (Gladstone–Dale at constant pressure: n − 1 ∝ gas density ∝ 1/T). When > 0, the
+    // field is the temperature T − T_ambient in kelvin and gladstoneDale is n − 1 of the air at
+    // ambientKelvin; n is taken relative to that air (n = 1 at ambient), linearised about it:
+    // n = 1 − f·gladstoneDale/ambientKelvin, i.e. ior = 1 − gladstoneDale/ambientKelvin. Its
+    // relative error in n − 1 is f/ambientKelvin (the exact 1/T form would need a per-voxel map,
+    // which the linear material path does not have).
+    float gladstoneDale = 0.0f;
+    float ambientKelvin = 288.15f;
 };
 
 enum class LightType { Point, Directional, Spot };

@@ -11,6 +11,7 @@ PACKAGES=(
     libegl-mesa0 libgl1-mesa-dri libglx-mesa0 xvfb xauth
     nlohmann-json3-dev libcli11-dev libpng-dev libopenexr-dev
     catch2
+    python3-matplotlib  # scripts/plot_advection_bench.py (run with /usr/bin/python3)
 )
 
 missing=()

@@ -416,6 +416,40 @@ TEST_CASE("out-of-range values name the allowed range", "[scene]") {
     }
 }
 
+TEST_CASE("a gladstone_dale material maps temperature to n below that of ambient air", "[scene]") {
+    SECTION("the linearised index per kelvin, with the default and a given ambient") {
+        const eikon::Scene scene = eikon::parseScene(
+            R"({"sources": [{"type": "sphere"}], "materials": [
+                {"name": "air", "field": "temperature", "gladstone_dale": 0.00029},
+                {"name": "hot", "field": "temperature", "gladstone_dale": 0.5,
+                 "ambient_kelvin": 250}]})",
+            "smoke.json");
+        const eikon::MaterialSpec& air = scene.materials[0];
+        CHECK(air.gladstoneDale == 0.00029f);
+        CHECK(air.ambientKelvin == 288.15f);
+        // n = 1 + θ·(ior − 1): 10 K above ambient lowers n by 10·2.9e-4/288.15.
+        CHECK(air.ior == Approx(1.0 - 0.00029 / 288.15).epsilon(1e-7));
+        CHECK(scene.materials[1].ior == Approx(1.0 - 0.5 / 250.0).epsilon(1e-7));
+    }
+    SECTION("ior and gladstone_dale together") {
+        const Failure f = failureOf(R"({"sources": [{"type": "sphere"}], "materials": [
+            {"name": "m", "ior": 1.5, "gladstone_dale": 0.1}]})");
+        CHECK(f.where == "smoke.json:/materials/0/gladstone_dale");
+        CHECK_THAT(f.reason, Contains("not both"));
+    }
+    SECTION("ambient_kelvin alone") {
+        const Failure f = failureOf(R"({"sources": [{"type": "sphere"}], "materials": [
+            {"name": "m", "ambient_kelvin": 300}]})");
+        CHECK(f.where == "smoke.json:/materials/0/ambient_kelvin");
+        CHECK_THAT(f.reason, Contains("needs \"gladstone_dale\""));
+    }
+    SECTION("a non-positive constant") {
+        const Failure f = failureOf(R"({"sources": [{"type": "sphere"}], "materials": [
+            {"name": "m", "gladstone_dale": 0}]})");
+        CHECK(f.message == "smoke.json:/materials/0/gladstone_dale: expected a number > 0, got 0");
+    }
+}
+
 TEST_CASE("missing required keys are reported where they belong", "[scene]") {
     SECTION("no sources") {
         const Failure f = failureOf(R"({"materials": [{"name": "m"}]})");

@@ -180,30 +180,3 @@ TEST_CASE("a velocity far beyond the CFL limit or a stalled pressure solve throw
     CHECK_THROWS_WITH(stalled.step(0.01f),
                       Catch::Contains("pressure") && Catch::Contains("did not converge"));
 }
-
-TEST_CASE("smoke solver cost per step by stage", "[.][smoke][bench]") {
-    // Hidden: run with `eikon_tests_sim "[bench]"` to measure; prints ms per substep by stage.
-    for (int n : {32, 48}) {
-        SmokeSettings s;
-        s.domain = test::closedBox({n, n, n}, 1.0f / n);
-        s.domain.walls[3] = Wall::Open;
-        s.advection = {AdvectionScheme::MacCormack, Limiter::Revert};
-        s.forces.vorticity = 2.0f;
-        SmokeSolver solver(s);
-        SmokeSource src;
-        src.shape = SmokeShape::sphere({0.5f, 0.2f, 0.5f}, 0.12f);
-        src.densityRate = 4.0f;
-        src.temperatureRate = 10.0f;
-        solver.addSource(src);
-        solver.addObstacle(SmokeShape::sphere({0.5f, 0.6f, 0.5f}, 0.15f));
-        for (int f = 0; f < 12; ++f) solver.advanceFrame();  // let the plume develop
-        SmokeStepStats total;
-        for (int f = 0; f < 12; ++f) total.add(solver.advanceFrame());
-        const double k = 1.0 / total.substeps;
-        WARN(n << "^3 MacCormack+revert, vorticity, sphere: per substep advection "
-               << total.advectionMs * k << " ms, sources+forces " << total.forcesMs * k
-               << " ms, projection " << total.projectionMs * k << " ms; CG iterations mean "
-               << total.cgIterations * k << " max " << total.maxCgIterations << "; substeps "
-               << total.substeps << " over 12 frames");
-    }
-}
