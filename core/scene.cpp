@@ -87,6 +87,20 @@ std::string readScalarFieldName(const Value& value) {
     return text;
 }
 
+// A field value a procedural source writes: finite, and >= 0 for the fields where a negative
+// value means nothing (field_registry.h).
+float readFieldValue(const Value& value, const std::string& fieldName) {
+    const float x = value.floatNumber();
+    if (x < 0.0f && fieldMustBeNonNegative(fieldName)) {
+        std::string why = "field '" + fieldName + "' must not be negative";
+        if (fieldKind(fieldName) == field::kIor) {
+            why += ": a material maps it to n = 1 + f·(ior − 1), which must not fall below 1";
+        }
+        value.failExpected("a number >= 0 (" + why + ")");
+    }
+    return x;
+}
+
 glm::vec3 readColor(const Value& value) {
     return value.vec3(Range::atLeast(0.0));
 }
@@ -179,8 +193,8 @@ void readRamp(const Value& value, SourceSpec& source) {
         object.required("axis", "\"x\", \"y\" or \"z\"").choice({"x", "y", "z"});
     source.profile = SourceProfile::Ramp;
     source.rampAxis = axis == "x" ? 0 : axis == "y" ? 1 : 2;
-    source.rampFrom = object.required("from", "a number").floatNumber();
-    source.rampTo = object.required("to", "a number").floatNumber();
+    source.rampFrom = readFieldValue(object.required("from", "a number"), source.field);
+    source.rampTo = readFieldValue(object.required("to", "a number"), source.field);
     object.finish();
 }
 
@@ -188,7 +202,7 @@ void readRamp(const Value& value, SourceSpec& source) {
 // a ramp in place of one value, a clip box.
 void readProceduralCommon(Object& object, SourceSpec& source) {
     if (auto field = object.optional("field")) source.field = readScalarFieldName(*field);
-    if (auto value = object.optional("value")) source.value = value->floatNumber();
+    if (auto value = object.optional("value")) source.value = readFieldValue(*value, source.field);
     if (auto falloff = object.optional("falloff")) {
         source.falloff = falloff->floatNumber(Range::atLeast(0.0));
     }

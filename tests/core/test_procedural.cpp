@@ -129,6 +129,7 @@ TEST_CASE("luneburg profile: n = sqrt(2 - (r/R)^2) at every voxel centre with io
     INFO("resampled: worst |n - formula| " << worstDense);
     // Sample positions rounded to float: a few ulps of the gradient (≤ 1.8 per unit) times 1e-7.
     CHECK(worstDense < 1e-6);
+    CHECK_NOTHROW(checkRefractiveIndex(scene, fields, {{"n", dense}}));
 }
 
 TEST_CASE("ramp: linear along its axis inside, clamped then fading outside", "[procedural]") {
@@ -330,6 +331,31 @@ TEST_CASE("labelled field names: a canonical kind, a dot, a label", "[procedural
             R"({"sources": [{"type": "vdb", "file": "a.vdb"}],
                 "materials": [{"name": "glass", "field": "n.crown", "ior": 1.5}]})",
             "s.json"));
+    }
+}
+
+TEST_CASE("negative values of fields that cannot be negative are rejected when parsed",
+          "[procedural][scene][bad-input]") {
+    SECTION("n") {
+        const Failure f =
+            failureOf(sceneWithSource(R"({"type": "sphere", "field": "n", "value": -0.5})"));
+        CHECK(f.where == "lens.json:/sources/0/value");
+        CHECK_THAT(f.reason, Contains("expected a number >= 0 (field 'n' must not be negative: a "
+                                      "material maps it to n = 1 + f·(ior − 1), which must not "
+                                      "fall below 1), got -0.5"));
+    }
+    SECTION("a labelled density in a ramp") {
+        const Failure f = failureOf(sceneWithSource(
+            R"({"type": "box", "field": "density.fog", "ramp": {"axis": "y", "from": 1, "to": -1}})",
+            "density.fog"));
+        CHECK(f.where == "lens.json:/sources/0/ramp/to");
+        CHECK_THAT(f.reason, Contains("field 'density.fog' must not be negative"));
+    }
+    SECTION("temperature may be negative") {
+        CHECK_NOTHROW(
+            parseScene(sceneWithSource(R"({"type": "sphere", "field": "temperature", "value": -3})",
+                                       "temperature"),
+                       "s.json"));
     }
 }
 
