@@ -359,6 +359,85 @@ TEST_CASE("negative values of fields that cannot be negative are rejected when p
     }
 }
 
+TEST_CASE("the index-profile scenes hold what they say", "[procedural][scene]") {
+    ensureOpenVdbInitialized();
+    const std::string folder = std::string(EIKON_SOURCE_DIR) + "/data/scenes/";
+    auto maxValue = [](const openvdb::FloatGrid& grid) {
+        float hi = -1e30f;
+        for (auto it = grid.cbeginValueOn(); it; ++it) hi = std::max(hi, *it);
+        return hi;
+    };
+
+    SECTION("luneburg lens: n = sqrt(2 - (r/R)^2), sqrt(2) at the centre") {
+        const Scene scene = loadScene(folder + "luneburg_lens.json");
+        REQUIRE(scene.sources[0].profile == SourceProfile::Luneburg);
+        CHECK(scene.sources[0].value == 1.0f);
+        CHECK(scene.materials[0].field == scene.sources[0].field);
+        CHECK(scene.materials[0].ior == 2.0f);
+        FieldRegistry fields;
+        SceneSources(scene).loadFrame(0, fields);
+        // The voxel centre nearest the lens's centre is within half a voxel diagonal of it.
+        const float peak = maxValue(*fields.floatGrid("n"));
+        CHECK(peak <= std::sqrt(2.0f) - 1.0f);
+        CHECK(peak > std::sqrt(2.0f) - 1.0f - 0.01f);
+    }
+    SECTION("mirage slab: n grows with height through the hot layer, then stays") {
+        const Scene scene = loadScene(folder + "mirage_slab.json");
+        const SourceSpec& layer = scene.sources[0];
+        REQUIRE(layer.profile == SourceProfile::Ramp);
+        CHECK(layer.rampAxis == 1);
+        CHECK(layer.rampFrom < layer.rampTo);
+        // The air above carries on at the layer's top value: n is continuous.
+        CHECK(scene.sources[1].value == layer.rampTo);
+        CHECK(scene.sources[1].boxMin.y == layer.boxMax.y);
+        CHECK(scene.environment.type == EnvironmentType::Gradient);
+        FieldRegistry fields;
+        SceneSources(scene).loadFrame(0, fields);
+        auto grid = fields.floatGrid("n");
+        auto acc = grid->getConstAccessor();
+        float previous = -1.0f;
+        bool rising = true;
+        for (int j = -20; j < 12; ++j) {  // voxels of 0.025 from y = -0.5 to 0.3
+            const float f = acc.getValue(openvdb::Coord(0, j, -100));
+            rising = rising && f >= previous;
+            previous = f;
+        }
+        CHECK(rising);
+        CHECK(previous == Approx(layer.rampTo));
+    }
+    SECTION("three glass cube: three labelled glasses, three indices, three colours") {
+        const Scene scene = loadScene(folder + "three_glass_cube.json");
+        std::vector<std::string> glassFields;
+        for (const MaterialSpec& m : scene.materials)
+            if (m.ior > 1.0f) glassFields.push_back(m.field);
+        REQUIRE(glassFields.size() == 3);
+        CHECK(scene.materials[0].ior != scene.materials[1].ior);
+        CHECK(scene.materials[1].ior != scene.materials[2].ior);
+        CHECK(scene.materials[0].absorption != scene.materials[1].absorption);
+        CHECK(scene.materials[1].absorption != scene.materials[2].absorption);
+        FieldRegistry fields;
+        SceneSources(scene).loadFrame(0, fields);
+        // The layers share no voxel and all lie in one rounded cube.
+        std::map<openvdb::Coord, int> holders;
+        for (const std::string& name : glassFields)
+            for (auto it = fields.floatGrid(name)->cbeginValueOn(); it; ++it)
+                ++holders[it.getCoord()];
+        int shared = 0;
+        for (const auto& entry : holders) shared += entry.second > 1 ? 1 : 0;
+        CHECK(holders.size() > 30000);  // ~ (1 + 2 · falloff)³ / h³ less the rounding
+        CHECK(shared == 0);
+        for (const SourceSpec& s : scene.sources)
+            if (s.field != "density") CHECK(s.cornerRadius > 0.0f);
+    }
+    SECTION("houdini smoke behind a glass sphere") {
+        const Scene scene = loadScene(folder + "houdini_smoke_glass.json");
+        CHECK(scene.sources[0].type == SourceType::Vdb);
+        CHECK(scene.sources[1].type == SourceType::Sphere);
+        CHECK(scene.sources[1].field == "n");
+        CHECK(scene.materials[1].ior == 1.5f);
+    }
+}
+
 TEST_CASE("the index-profile example in docs/scene-format.md parses", "[procedural][scene]") {
     const std::string path = std::string(EIKON_SOURCE_DIR) + "/docs/scene-format.md";
     std::ifstream in(path);
