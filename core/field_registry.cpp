@@ -18,6 +18,16 @@ bool isCanonicalFieldName(const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+std::string fieldKind(const std::string& name) {
+    return name.substr(0, name.find('.'));
+}
+
+bool fieldMustBeNonNegative(const std::string& name) {
+    const std::string kind = fieldKind(name);
+    return kind == field::kDensity || kind == field::kExtinction || kind == field::kScattering ||
+           kind == field::kFlame || kind == field::kIor;
+}
+
 bool Field::isScalar() const {
     return grid && grid->isType<openvdb::FloatGrid>();
 }

@@ -29,6 +29,12 @@ inline constexpr const char* kEmission = "emission";
 
 const std::vector<std::string>& canonicalFieldNames();
 bool isCanonicalFieldName(const std::string& name);
+// What kind of field a name is: the part before a '.' label ("n" for "n.crown"), or the name.
+std::string fieldKind(const std::string& name);
+// Fields whose values are amounts of stuff or optical coefficients (density, flame, kappa, sigma)
+// or an index excess that materials map to n = 1 + f·(ior − 1) (n), labelled or not: a negative
+// value is meaningless there, and import and the scene parser reject it.
+bool fieldMustBeNonNegative(const std::string& name);
 
 struct Field {
     std::string name;  // canonical name, or the grid's own name when no alias matched

@@ -1,8 +1,13 @@
 #include "core/procedural.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "core/scene.h"
 
 namespace eikon {
 namespace {
@@ -13,47 +18,125 @@ openvdb::math::Transform::Ptr cellAlignedTransform(float h) {
     return xform;
 }
 
-// Fills the voxels whose centres lie within `reach` of the shape with value·ramp(distance).
-template <typename SignedDistance>
-openvdb::FloatGrid::Ptr rasterize(glm::vec3 lo, glm::vec3 hi, float value, float falloff, float h,
-                                  SignedDistance distance) {
+double maxComponent(glm::dvec3 v) {
+    return std::max(v.x, std::max(v.y, v.z));
+}
+
+// Signed distance to the shape's surface: negative inside.
+double signedDistance(const SourceSpec& src, glm::dvec3 p) {
+    if (src.type == SourceType::Sphere)
+        return glm::length(p - glm::dvec3(src.center)) - double(src.radius);
+    // A box with rounded edges is the box shrunk by the radius, then grown by it.
+    const glm::dvec3 lo(src.boxMin), hi(src.boxMax);
+    const double r = src.cornerRadius;
+    const glm::dvec3 q = glm::abs(p - 0.5 * (lo + hi)) - (0.5 * (hi - lo) - r);
+    return glm::length(glm::max(q, 0.0)) + std::min(maxComponent(q), 0.0) - r;
+}
+
+// The shape's axis-aligned extent.
+void shapeExtent(const SourceSpec& src, glm::dvec3& lo, glm::dvec3& hi) {
+    if (src.type == SourceType::Sphere) {
+        lo = glm::dvec3(src.center) - double(src.radius);
+        hi = glm::dvec3(src.center) + double(src.radius);
+    } else {
+        lo = glm::dvec3(src.boxMin);
+        hi = glm::dvec3(src.boxMax);
+    }
+}
+
+// The profile at p, or where it meets the surface for points outside.
+double profileAt(const SourceSpec& src, glm::dvec3 p) {
+    switch (src.profile) {
+        case SourceProfile::Uniform:
+            break;
+        case SourceProfile::Luneburg:
+            return double(src.value) *
+                   luneburgExcessIndex(glm::length(p - glm::dvec3(src.center)), src.radius);
+        case SourceProfile::Ramp: {
+            glm::dvec3 lo, hi;
+            shapeExtent(src, lo, hi);
+            const int a = src.rampAxis;
+            const double t = std::clamp((p[a] - lo[a]) / (hi[a] - lo[a]), 0.0, 1.0);
+            return double(src.rampFrom) + (double(src.rampTo) - double(src.rampFrom)) * t;
+        }
+    }
+    return double(src.value);
+}
+
+bool insideClip(const SourceSpec& src, glm::dvec3 p) {
+    if (!src.clip) return true;
+    const glm::dvec3 lo(src.clip->min), hi(src.clip->max);
+    return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x < hi.x && p.y < hi.y && p.z < hi.z;
+}
+
+}  // namespace
+
+double luneburgExcessIndex(double r, double radius) {
+    const double s = std::min(r / radius, 1.0);
+    return std::sqrt(2.0 - s * s) - 1.0;
+}
+
+double proceduralValue(const SourceSpec& src, glm::dvec3 p) {
+    if (!insideClip(src, p)) return 0.0;
+    const double d = signedDistance(src, p);
+    if (d <= 0.0) return profileAt(src, p);
+    if (d < double(src.falloff)) return profileAt(src, p) * (1.0 - d / double(src.falloff));
+    return 0.0;
+}
+
+openvdb::FloatGrid::Ptr makeProceduralField(const SourceSpec& src) {
+    if (src.type != SourceType::Sphere && src.type != SourceType::Box)
+        throw Error(src.jsonPath, "not a procedural source (sphere or box)");
+    const float h = src.voxelSize;
+    glm::dvec3 lo, hi;
+    shapeExtent(src, lo, hi);
+    lo -= double(src.falloff);
+    hi += double(src.falloff);
+    if (src.clip) {
+        lo = glm::max(lo, glm::dvec3(src.clip->min));
+        hi = glm::min(hi, glm::dvec3(src.clip->max));
+    }
     auto grid = openvdb::FloatGrid::create(0.0f);
     grid->setTransform(cellAlignedTransform(h));
     grid->setGridClass(openvdb::GRID_FOG_VOLUME);
+    if (glm::any(glm::greaterThanEqual(lo, hi))) return grid;  // clipped away
     auto acc = grid->getAccessor();
-    const glm::ivec3 i0 = glm::ivec3(glm::floor((lo - falloff) / h)) - 1;
-    const glm::ivec3 i1 = glm::ivec3(glm::ceil((hi + falloff) / h)) + 1;
+    const glm::ivec3 i0 = glm::ivec3(glm::floor(lo / double(h))) - 1;
+    const glm::ivec3 i1 = glm::ivec3(glm::ceil(hi / double(h))) + 1;
     for (int k = i0.z; k <= i1.z; ++k)
         for (int j = i0.y; j <= i1.y; ++j)
             for (int i = i0.x; i <= i1.x; ++i) {
-                const glm::vec3 p = (glm::vec3(i, j, k) + 0.5f) * h;
-                const float d = distance(p);
-                float v = 0.0f;
-                if (d <= 0.0f)
-                    v = value;
-                else if (d < falloff)
-                    v = value * (1.0f - d / falloff);
+                // The centre as the grid's transform computes it, so that samples there return
+                // exactly this value.
+                const glm::dvec3 p = (glm::dvec3(i, j, k) + 0.5) * double(h);
+                const float v = float(proceduralValue(src, p));
                 if (v != 0.0f) acc.setValue(openvdb::Coord(i, j, k), v);
             }
     return grid;
 }
 
-}  // namespace
-
 openvdb::FloatGrid::Ptr makeSphereField(glm::vec3 center, float radius, float value, float falloff,
                                         float voxelSize) {
-    return rasterize(center - radius, center + radius, value, falloff, voxelSize,
-                     [&](glm::vec3 p) { return glm::length(p - center) - radius; });
+    SourceSpec src;
+    src.type = SourceType::Sphere;
+    src.center = center;
+    src.radius = radius;
+    src.value = value;
+    src.falloff = falloff;
+    src.voxelSize = voxelSize;
+    return makeProceduralField(src);
 }
 
 openvdb::FloatGrid::Ptr makeBoxField(glm::vec3 boxMin, glm::vec3 boxMax, float value, float falloff,
                                      float voxelSize) {
-    const glm::vec3 c = 0.5f * (boxMin + boxMax);
-    const glm::vec3 halfSize = 0.5f * (boxMax - boxMin);
-    return rasterize(boxMin, boxMax, value, falloff, voxelSize, [&](glm::vec3 p) {
-        const glm::vec3 q = glm::abs(p - c) - halfSize;
-        return glm::length(glm::max(q, 0.0f)) + std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f);
-    });
+    SourceSpec src;
+    src.type = SourceType::Box;
+    src.boxMin = boxMin;
+    src.boxMax = boxMax;
+    src.value = value;
+    src.falloff = falloff;
+    src.voxelSize = voxelSize;
+    return makeProceduralField(src);
 }
 
 }  // namespace eikon

@@ -1,15 +1,39 @@
 #pragma once
 // Procedural shapes written into fields: the test and demo scenes use them where a closed-form
-// answer is wanted (a homogeneous cube of known extinction and side).
+// answer is wanted (a homogeneous cube of known extinction and side, a Luneburg lens, a slab
+// whose index grows linearly with height).
+//
+// One mechanism for every shape: a signed distance d(p) to the surface (sphere, box, box with
+// rounded edges), a value inside it given by a profile (uniform, Luneburg, linear ramp), a linear
+// falloff outside it, and an optional clip box:
+//   f(p) = P(p)                      d(p) <= 0
+//        = P(p) · (1 − d/falloff)     0 < d(p) < falloff
+//        = 0                          otherwise, and wherever p is outside the clip box,
+// where outside the shape the profile P is taken where it is at the surface (the ramp's
+// coordinate clamped to the shape's extent, the Luneburg radius clamped to R).
 #include <openvdb/openvdb.h>
 
 #include <glm/vec3.hpp>
 
 namespace eikon {
 
+struct SourceSpec;
+
 // Grids whose voxel i covers [i·h, (i+1)·h) in world space (cell centres at (i + ½)·h), so that a
-// box whose faces lie on multiples of h is covered exactly. Inside the shape the value is
-// `value`; outside it falls linearly to zero over `falloff` scene units (0: a sharp edge).
+// box whose faces lie on multiples of h is covered exactly. Each voxel holds f at its centre.
+// `src` is a Sphere or Box source; throws eikon::Error for any other type.
+openvdb::FloatGrid::Ptr makeProceduralField(const SourceSpec& src);
+
+// f at a world point, computed in double: what makeProceduralField stores at a voxel centre
+// (rounded to float).
+double proceduralValue(const SourceSpec& src, glm::dvec3 p);
+
+// The Luneburg profile's shape at radius r of a sphere of radius R: sqrt(2 − (r/R)²) − 1 for
+// r <= R, 0 beyond (continuous at R). 1 + this is the Luneburg lens's index.
+double luneburgExcessIndex(double r, double radius);
+
+// Uniform shapes: `value` inside, falling linearly to zero over `falloff` scene units outside
+// (0: a sharp edge).
 openvdb::FloatGrid::Ptr makeSphereField(glm::vec3 center, float radius, float value, float falloff,
                                         float voxelSize);
 openvdb::FloatGrid::Ptr makeBoxField(glm::vec3 boxMin, glm::vec3 boxMax, float value, float falloff,

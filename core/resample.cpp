@@ -1,11 +1,16 @@
 #include "core/resample.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 
 #include <openvdb/tools/Interpolation.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "core/error.h"
 
@@ -68,6 +73,7 @@ DenseGrid resampleToDense(const Field& field, const RenderVolume& volume) {
     out.volume = volume;
     out.values.assign(volume.voxelCount(), 0.0f);
     const glm::ivec3 res = volume.resolution;
+    std::atomic<bool> nonFinite{false};
 
     tbb::parallel_for(tbb::blocked_range<int>(0, res.z), [&](const tbb::blocked_range<int>& r) {
         auto acc = grid->getConstAccessor();
@@ -77,10 +83,96 @@ DenseGrid resampleToDense(const Field& field, const RenderVolume& volume) {
                 for (int i = 0; i < res.x; ++i) {
                     const glm::vec3 w = volume.voxelCenter(i, j, k);
                     const openvdb::Vec3d ijk = xform.worldToIndex(openvdb::Vec3d(w.x, w.y, w.z));
-                    out.values[out.index(i, j, k)] = openvdb::tools::BoxSampler::sample(acc, ijk);
+                    const float v = openvdb::tools::BoxSampler::sample(acc, ijk);
+                    if (!std::isfinite(v)) nonFinite = true;
+                    out.values[out.index(i, j, k)] = v;
                 }
     });
+    if (nonFinite) {
+        const auto count = std::count_if(out.values.begin(), out.values.end(),
+                                         [](float v) { return !std::isfinite(v); });
+        throw Error(field.origin, "field '" + field.name + "' has NaN/Inf values (" +
+                                      std::to_string(count) + " of the render volume's " +
+                                      std::to_string(out.values.size()) + " voxels)");
+    }
     return out;
+}
+
+void checkRefractiveIndex(const Scene& scene, const FieldRegistry& fields,
+                          const std::map<std::string, DenseGrid>& dense) {
+    std::vector<size_t> refracting;  // materials with ior != 1
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+        if (scene.materials[m].ior != 1.0f) refracting.push_back(m);
+    if (refracting.empty()) return;
+    std::vector<const DenseGrid*> grids;
+    for (size_t m : refracting) {
+        auto it = dense.find(scene.materials[m].field);
+        if (it == dense.end())
+            throw Error(scene.path + ":/materials/" + std::to_string(m) + "/field",
+                        "field '" + scene.materials[m].field + "' was not resampled");
+        grids.push_back(&it->second);
+    }
+    auto indexAt = [&](size_t v) {
+        float n = 1.0f;  // summed as shaders/shared/refraction.h sums it
+        for (size_t r = 0; r < refracting.size(); ++r)
+            n += grids[r]->values[v] * (scene.materials[refracting[r]].ior - 1.0f);
+        return n;
+    };
+    // The lowest n (the first such voxel on ties, whatever the thread count), and how many
+    // voxels are below 1.
+    struct Lowest {
+        float n = 1.0f;  // NaN counts as −∞
+        size_t voxel = std::numeric_limits<size_t>::max();
+        size_t below = 0;
+        bool before(float n2, size_t v2) const { return n2 < n || (n2 == n && v2 < voxel); }
+    };
+    const size_t count = grids[0]->values.size();
+    const Lowest lowest = tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, count), Lowest{},
+        [&](const tbb::blocked_range<size_t>& r, Lowest acc) {
+            for (size_t v = r.begin(); v != r.end(); ++v) {
+                float n = indexAt(v);
+                if (n >= 1.0f) continue;
+                if (std::isnan(n)) n = -std::numeric_limits<float>::infinity();
+                ++acc.below;
+                if (acc.before(n, v)) acc.n = n, acc.voxel = v;
+            }
+            return acc;
+        },
+        [](Lowest a, const Lowest& b) {
+            if (a.before(b.n, b.voxel)) a.n = b.n, a.voxel = b.voxel;
+            a.below += b.below;
+            return a;
+        });
+    if (lowest.below == 0) return;
+    const size_t bad = lowest.voxel;
+
+    // Blame the material whose field pulls n down most there.
+    size_t worst = 0;
+    for (size_t r = 1; r < refracting.size(); ++r) {
+        const auto pull = [&](size_t q) {
+            return grids[q]->values[bad] * (scene.materials[refracting[q]].ior - 1.0f);
+        };
+        if (pull(r) < pull(worst)) worst = r;
+    }
+    const size_t m = refracting[worst];
+    const MaterialSpec& mat = scene.materials[m];
+    const RenderVolume& volume = grids[worst]->volume;
+    const glm::ivec3 res = volume.resolution;
+    const int i = int(bad % size_t(res.x));
+    const int j = int((bad / size_t(res.x)) % size_t(res.y));
+    const int k = int(bad / (size_t(res.x) * size_t(res.y)));
+    const glm::vec3 p = volume.voxelCenter(i, j, k);
+    std::ostringstream reason;
+    reason << "material '" << mat.name << "' (ior " << mat.ior << ") reads field '" << mat.field
+           << "'";
+    if (fields.has(mat.field)) reason << " (from " << fields.get(mat.field).origin << ")";
+    reason << ", which is " << grids[worst]->values[bad] << std::setprecision(4) << " at (" << p.x
+           << ", " << p.y << ", " << p.z << std::setprecision(7)
+           << "): the materials make n = " << indexAt(bad) << " there (the lowest; n < 1 in "
+           << lowest.below << " voxels), and n must be >= 1 (a field that a refracting material "
+           << "reads must not be negative)";
+    throw Error(scene.path + ":/materials/" + std::to_string(m) + "/field", reason.str());
 }
 
 }  // namespace eikon

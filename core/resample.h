@@ -1,5 +1,8 @@
 #pragma once
 // From sparse OpenVDB fields to the dense render volume.
+#include <map>
+#include <string>
+
 #include "core/dense_grid.h"
 #include "core/field_registry.h"
 #include "core/scene.h"
@@ -13,7 +16,16 @@ namespace eikon {
 RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields);
 
 // Trilinear samples of a scalar field at the centres of the volume's voxels, in parallel with a
-// result that does not depend on the thread count.
+// result that does not depend on the thread count. Throws eikon::Error (at the field's origin)
+// when a sample is NaN or infinite.
 DenseGrid resampleToDense(const Field& field, const RenderVolume& volume);
+
+// The refractive index the materials make of the resampled fields, n = 1 + Σ f·(ior − 1), must
+// be >= 1 at every voxel: a field a material with ior > 1 reads must not go negative there.
+// Throws eikon::Error at the first voxel (x fastest) where it is not, naming the material's JSON
+// path, its field, where the field came from, the position and n. `dense` holds, by field name,
+// the grid of every field a material reads.
+void checkRefractiveIndex(const Scene& scene, const FieldRegistry& fields,
+                          const std::map<std::string, DenseGrid>& dense);
 
 }  // namespace eikon

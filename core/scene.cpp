@@ -58,14 +58,58 @@ std::vector<std::string> scalarFieldNames() {
     return names;
 }
 
+bool isLabelCharacter(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+// A scalar field name: a canonical one ("n"), or one with a label after a dot ("n.crown"), which
+// keeps several fields of one kind apart (three glasses, each with its own index and colour).
+std::string readScalarFieldName(const Value& value) {
+    const std::vector<std::string> kinds = scalarFieldNames();
+    if (!value.json().is_string()) return value.choice(kinds);  // throws the expected form
+    const std::string text = value.string();
+    const std::size_t dot = text.find('.');
+    if (dot == std::string::npos) return value.choice(kinds);
+    const std::string kind = text.substr(0, dot);
+    const std::string label = text.substr(dot + 1);
+    if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) {
+        std::string names;
+        for (const std::string& k : kinds) names += (names.empty() ? "" : ", ") + k;
+        std::string reason = "expected a scalar field name before '.' (one of " + names +
+                             "), got \"" + kind + "\" in \"" + text + "\"";
+        const std::string suggestion = json::closestMatch(kind, kinds);
+        if (!suggestion.empty()) reason += "; did you mean \"" + suggestion + "\"?";
+        value.fail(reason);
+    }
+    if (label.empty() || !std::all_of(label.begin(), label.end(), isLabelCharacter)) {
+        value.fail("expected a label of letters, digits and '_' after \"" + kind + ".\", got \"" +
+                   text + "\"");
+    }
+    return text;
+}
+
+// A field value a procedural source writes: finite, and >= 0 for the fields where a negative
+// value means nothing (field_registry.h).
+float readFieldValue(const Value& value, const std::string& fieldName) {
+    const float x = value.floatNumber();
+    if (x < 0.0f && fieldMustBeNonNegative(fieldName)) {
+        std::string why = "field '" + fieldName + "' must not be negative";
+        if (fieldKind(fieldName) == field::kIor) {
+            why += ": a material maps it to n = 1 + f·(ior − 1), which must not fall below 1";
+        }
+        value.failExpected("a number >= 0 (" + why + ")");
+    }
+    return x;
+}
+
 glm::vec3 readColor(const Value& value) {
     return value.vec3(Range::atLeast(0.0));
 }
 
 // ---- volume ----------------------------------------------------------------------------------
 
-Bounds3 readBounds(const Value& value) {
-    Object object(value, "the volume bounds");
+Bounds3 readBounds(const Value& value, const std::string& kind = "the volume bounds") {
+    Object object(value, kind);
     Bounds3 bounds;
     bounds.min = object.required("min", kVec3Form).vec3();
     bounds.max = object.required("max", kVec3Form).vec3();
@@ -144,15 +188,46 @@ void readFileSource(Object& object, const fs::path& sceneDirectory, SourceSpec& 
     if (auto aliases = object.optional("aliases")) source.aliases = readAliases(*aliases);
 }
 
-// The procedural keys shared by sphere and box: which field, what value, how soft, how fine.
+void readRamp(const Value& value, SourceSpec& source) {
+    Object object(value, "a ramp");
+    const std::string axis =
+        object.required("axis", "\"x\", \"y\" or \"z\"").choice({"x", "y", "z"});
+    source.profile = SourceProfile::Ramp;
+    source.rampAxis = axis == "x" ? 0 : axis == "y" ? 1 : 2;
+    source.rampFrom = readFieldValue(object.required("from", "a number"), source.field);
+    source.rampTo = readFieldValue(object.required("to", "a number"), source.field);
+    object.finish();
+}
+
+// The procedural keys shared by sphere and box: which field, what value, how soft, how fine,
+// a ramp in place of one value, a clip box.
 void readProceduralCommon(Object& object, SourceSpec& source) {
-    if (auto field = object.optional("field")) source.field = field->choice(scalarFieldNames());
-    if (auto value = object.optional("value")) source.value = value->floatNumber();
+    if (auto field = object.optional("field")) source.field = readScalarFieldName(*field);
+    if (auto value = object.optional("value")) source.value = readFieldValue(*value, source.field);
     if (auto falloff = object.optional("falloff")) {
         source.falloff = falloff->floatNumber(Range::atLeast(0.0));
     }
     if (auto voxelSize = object.optional("voxel_size")) {
         source.voxelSize = voxelSize->floatNumber(Range::greaterThan(0.0));
+    }
+    if (auto ramp = object.optional("ramp")) {
+        object.forbid("value", "a ramp sets the values ('from' and 'to'); remove 'value'");
+        readRamp(*ramp, source);
+    }
+    if (auto clip = object.optional("clip")) source.clip = readBounds(*clip, "the clip box");
+}
+
+// The shape's extent with its falloff must meet the clip box, or the source writes nothing.
+void checkClip(const Object& object, const SourceSpec& source, glm::vec3 lo, glm::vec3 hi) {
+    if (!source.clip) return;
+    const Bounds3 reach{lo - source.falloff, hi + source.falloff};
+    const Bounds3 kept{glm::max(reach.min, source.clip->min),
+                       glm::min(reach.max, source.clip->max)};
+    if (!kept.valid()) {
+        object.failAt("clip", "expected a clip box that meets the shape (from " +
+                                  formatVec3(reach.min) + " to " + formatVec3(reach.max) +
+                                  " with its falloff), got min " + formatVec3(source.clip->min) +
+                                  " and max " + formatVec3(source.clip->max));
     }
 }
 
@@ -172,8 +247,18 @@ void readSphereSource(Object& object, SourceSpec& source) {
     if (auto radius = object.optional("radius")) {
         source.radius = radius->floatNumber(Range::greaterThan(0.0));
     }
+    if (auto profile = object.optional("profile")) {
+        if (profile->choice({"uniform", "luneburg"}) == "luneburg") {
+            source.profile = SourceProfile::Luneburg;
+            object.forbid("falloff",
+                          "the luneburg profile is already 0 at the surface, so a falloff would "
+                          "change nothing; remove 'falloff'");
+            object.forbid("ramp", "a sphere has one profile: remove 'ramp' or 'profile'");
+        }
+    }
     readProceduralCommon(object, source);
     checkVoxelCount(object, source, 2.0f * (source.radius + source.falloff));
+    checkClip(object, source, source.center - source.radius, source.center + source.radius);
 }
 
 void readBoxSource(Object& object, SourceSpec& source) {
@@ -186,8 +271,14 @@ void readBoxSource(Object& object, SourceSpec& source) {
                                  formatVec3(source.boxMax));
     }
     const glm::vec3 size = source.boxMax - source.boxMin;
+    if (auto radius = object.optional("corner_radius")) {
+        // Up to half the thinnest side: a box rounded that far is a slab with round rims.
+        source.cornerRadius =
+            radius->floatNumber(Range::closed(0.0, 0.5 * std::min({size.x, size.y, size.z})));
+    }
     const float extent = std::max({size.x, size.y, size.z}) + 2.0f * source.falloff;
     checkVoxelCount(object, source, extent);
+    checkClip(object, source, source.boxMin, source.boxMax);
 }
 
 SourceSpec readSource(const Value& value, const fs::path& sceneDirectory) {
@@ -229,7 +320,7 @@ MaterialSpec readMaterial(const Value& value) {
     Object object(value, "a material");
     MaterialSpec material;
     material.name = object.required("name", "a non-empty string").nonEmptyString();
-    if (auto field = object.optional("field")) material.field = field->choice(scalarFieldNames());
+    if (auto field = object.optional("field")) material.field = readScalarFieldName(*field);
     if (auto absorption = object.optional("absorption")) {
         material.absorption = readColor(*absorption);
     }
@@ -518,6 +609,27 @@ TimeSettings readTime(const Value& value) {
     return time;
 }
 
+// A labelled field ("n.crown") exists only where a source writes it. Procedural sources name
+// theirs; a VDB file may hold a grid of that name, which only loading it tells.
+void checkLabelledFields(const Value& materials, const Scene& scene) {
+    std::vector<std::string> written;
+    for (const SourceSpec& source : scene.sources) {
+        if (source.type == SourceType::Vdb || source.type == SourceType::VdbSequence) return;
+        written.push_back(source.field);
+    }
+    for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+        const std::string& name = scene.materials[m].field;
+        if (name.find('.') == std::string::npos) continue;
+        if (std::find(written.begin(), written.end(), name) != written.end()) continue;
+        std::string list;
+        for (const std::string& w : written) list += (list.empty() ? "" : ", ") + w;
+        std::string reason = "no source writes field '" + name + "' (sources write: " + list + ")";
+        const std::string suggestion = json::closestMatch(name, written);
+        if (!suggestion.empty()) reason += "; did you mean \"" + suggestion + "\"?";
+        materials.element(m).child("field").fail(reason);
+    }
+}
+
 Scene readScene(const Value& root, const std::string& file) {
     Object object(root, "the scene");
     Scene scene;
@@ -526,7 +638,9 @@ Scene readScene(const Value& root, const std::string& file) {
     if (auto volume = object.optional("volume")) scene.volume = readVolume(*volume);
     scene.sources =
         readSources(object.required("sources", "a non-empty array of sources"), sceneDirectory);
-    scene.materials = readMaterials(object.required("materials", "a non-empty array of materials"));
+    const Value materials = object.required("materials", "a non-empty array of materials");
+    scene.materials = readMaterials(materials);
+    checkLabelledFields(materials, scene);
     if (auto lights = object.optional("lights")) scene.lights = readLights(*lights);
     if (auto receivers = object.optional("receivers")) scene.receivers = readReceivers(*receivers);
     if (auto camera = object.optional("camera")) scene.camera = readCamera(*camera);

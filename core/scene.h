@@ -31,6 +31,12 @@ struct VolumeSettings {
 
 enum class SourceType { Vdb, VdbSequence, Sphere, Box };
 
+// How a procedural shape's value varies inside it (core/procedural.h has the formulas).
+// Uniform: `value` everywhere. Luneburg (spheres): value · (sqrt(2 − (r/R)²) − 1), so that a
+// material of ior 2 reading it with value 1 gives the Luneburg lens n(r) = sqrt(2 − (r/R)²).
+// Ramp: linear along an axis, from rampFrom at the shape's lowest extent to rampTo at its highest.
+enum class SourceProfile { Uniform, Luneburg, Ramp };
+
 struct SourceSpec {
     SourceType type = SourceType::Vdb;
     // Vdb: a file. VdbSequence: any frame of the sequence or a pattern with #### in it.
@@ -38,16 +44,25 @@ struct SourceSpec {
     // Extra grid names per canonical field, tried before the built-in aliases,
     // e.g. {"density": ["soot_fine"]}.
     std::map<std::string, std::vector<std::string>> aliases;
-    // Procedural shapes (Sphere, Box) write `value` into field `field`, with a linear ramp of
-    // width `falloff` (scene units) outside the surface, on a grid of voxel size `voxelSize`.
+    // Procedural shapes (Sphere, Box) write `value` (shaped by `profile`) into field `field`,
+    // with a linear ramp of width `falloff` (scene units) outside the surface, on a grid of voxel
+    // size `voxelSize`.
     std::string field = "density";
-    glm::vec3 center{0.0f};   // Sphere
-    float radius = 1.0f;      // Sphere
-    glm::vec3 boxMin{-0.5f};  // Box
-    glm::vec3 boxMax{0.5f};   // Box
+    glm::vec3 center{0.0f};     // Sphere
+    float radius = 1.0f;        // Sphere
+    glm::vec3 boxMin{-0.5f};    // Box
+    glm::vec3 boxMax{0.5f};     // Box
+    float cornerRadius = 0.0f;  // Box: edges and corners rounded to this radius
     float value = 1.0f;
     float falloff = 0.0f;
     float voxelSize = 0.05f;
+    SourceProfile profile = SourceProfile::Uniform;
+    int rampAxis = 1;  // Ramp: 0, 1, 2 for x, y, z
+    float rampFrom = 0.0f;
+    float rampTo = 0.0f;
+    // The shape is kept only where a voxel centre lies in [clip.min, clip.max) (half-open, so
+    // that shapes clipped to adjacent boxes share no voxel), with no falloff across the clip.
+    std::optional<Bounds3> clip;
     std::string jsonPath;  // e.g. "/sources/2", for messages raised after parsing
 };
 

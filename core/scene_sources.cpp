@@ -14,19 +14,9 @@ SceneSources::SceneSources(const Scene& scene) : scene_(scene) {
             sequences_.emplace(s, findVdbSequence(scene.sources[s].file));
 }
 
-namespace {
-
-openvdb::FloatGrid::Ptr makeProceduralField(const SourceSpec& src) {
-    ensureOpenVdbInitialized();
-    if (src.type == SourceType::Sphere)
-        return makeSphereField(src.center, src.radius, src.value, src.falloff, src.voxelSize);
-    return makeBoxField(src.boxMin, src.boxMax, src.value, src.falloff, src.voxelSize);
-}
-
-}  // namespace
-
 void SceneSources::addProcedural(const SourceSpec& src, const std::string& origin,
                                  FieldRegistry& fields) {
+    ensureOpenVdbInitialized();
     openvdb::FloatGrid::Ptr grid = makeProceduralField(src);
     // Shapes that write the same field overlap by taking the larger value (a union).
     if (proceduralFields_.count(src.field) && fields.has(src.field)) {

@@ -52,12 +52,6 @@ openvdb::Index64 countNonFiniteVectors(const openvdb::Vec3SGrid& grid) {
     return n;
 }
 
-// Fields whose values are amounts of stuff or optical coefficients: negative is meaningless.
-bool mustBeNonNegative(const std::string& field) {
-    return field == field::kDensity || field == field::kExtinction || field == field::kScattering ||
-           field == field::kFlame;
-}
-
 // Copies the active values (voxels and tiles) of a double-precision grid into its float twin.
 template <typename SrcGrid, typename DstGrid>
 typename DstGrid::Ptr narrowGrid(const SrcGrid& src) {
@@ -117,10 +111,15 @@ void validate(const std::string& path, const std::string& gridName, const std::s
         if (s.nonFinite > 0)
             throw Error(path, "grid '" + gridName + "' has " + std::to_string(s.nonFinite) +
                                   " NaN/Inf values");
-        if (mustBeNonNegative(fieldName) && s.negative > 0)
+        if (fieldMustBeNonNegative(fieldName) && s.negative > 0) {
+            const std::string why = fieldKind(fieldName) == field::kIor
+                                        ? " (a material maps it to n = 1 + f·(ior − 1) >= 1)"
+                                        : "";
             throw Error(path, "grid '" + gridName + "' (" + fieldName + ") has " +
                                   std::to_string(s.negative) + " negative values (minimum " +
-                                  std::to_string(s.minimum) + "); " + fieldName + " must be >= 0");
+                                  std::to_string(s.minimum) + "); " + fieldName + " must be >= 0" +
+                                  why);
+        }
     } else if (auto v = dynamic_cast<const openvdb::Vec3SGrid*>(&grid)) {
         const openvdb::Index64 n = countNonFiniteVectors(*v);
         if (n > 0)

@@ -4,7 +4,7 @@
 // grids of types Eikon does not use, or that OpenVDB cannot decode here, are skipped by name with
 // a warning while the rest of the file loads. Everything else that is wrong with the file is an
 // eikon::Error naming the file: missing, truncated or corrupt, nothing usable, NaN/Inf values,
-// negative density.
+// negative values of density, flame, kappa, sigma or n (field_registry.h).
 #include <map>
 #include <string>
 #include <vector>

@@ -184,6 +184,8 @@ Image FrameRenderer::render(int frame) {
     if (curved || photons) refractionInputs = gradientInputs(setup, slotGrids);
     const bool gradientChanged = (curved || photons) && refractionInputs != gradientInputs_;
     const bool octreeChanged = photons && refractionInputs != octreeInputs_;
+    // n < 1 from a negative field is an input error, stopped before any stage uses it.
+    if (gradientChanged || octreeChanged) checkRefractiveIndex(scene_, fields_, dense_);
     const PhotonSettings photonSettings = photonSettingsFor(scene_);
     std::vector<unsigned char> photonKey;
     if (photons) photonKey = photonInputs(setup, slotGrids, photonSettings);

@@ -2,6 +2,9 @@
 // and the scene-level choices (auto bounds and resolution, procedural unions, missing fields).
 #include <catch2/catch.hpp>
 
+#include <limits>
+#include <map>
+
 #include "core/error.h"
 #include "core/procedural.h"
 #include "core/resample.h"
@@ -106,4 +109,51 @@ TEST_CASE("a material reading a field no source provides names the JSON path", "
                       Catch::StartsWith("test.json:/materials/0/field: material 'm' reads field "
                                         "'flame', which no source provides (fields present: "
                                         "density)"));
+}
+
+TEST_CASE("NaN in a field is stopped at resampling, naming the field and its origin",
+          "[resample][bad-input]") {
+    ensureOpenVdbInitialized();
+    FieldRegistry fields;
+    auto grid = makeBoxField(glm::vec3(-1.0f), glm::vec3(1.0f), 1.0f, 0.0f, 0.1f);
+    grid->tree().setValue(openvdb::Coord(3, 3, 3), std::numeric_limits<float>::quiet_NaN());
+    fields.set("n", grid, "glass.json:/sources/1");
+    const RenderVolume v{{glm::vec3(-1.0f), glm::vec3(1.0f)}, glm::ivec3(20)};
+    CHECK_THROWS_WITH(resampleToDense(fields.get("n"), v),
+                      Catch::StartsWith("glass.json:/sources/1: field 'n' has NaN/Inf values ("));
+}
+
+TEST_CASE("a negative field that a refracting material reads: n < 1 is an error naming it",
+          "[resample][bad-input]") {
+    ensureOpenVdbInitialized();
+    // Temperature may be negative; a material of ior 1.5 reading it would make n = 1 − 0.25.
+    Scene scene = sceneReading("temperature");
+    scene.materials[0].name = "hot_glass";
+    scene.materials[0].ior = 1.5f;
+    FieldRegistry fields;
+    fields.set("temperature",
+               makeBoxField(glm::vec3(0.0f, 0.0f, 0.0f), glm::vec3(0.5f), -0.5f, 0.0f, 0.1f),
+               "cold.vdb:temperature");
+    const RenderVolume v{{glm::vec3(-1.0f), glm::vec3(1.0f)}, glm::ivec3(20)};
+    std::map<std::string, DenseGrid> dense{
+        {"temperature", resampleToDense(fields.get("temperature"), v)}};
+    CHECK_THROWS_WITH(checkRefractiveIndex(scene, fields, dense),
+                      Catch::StartsWith("test.json:/materials/0/field: material 'hot_glass' (ior "
+                                        "1.5) reads field 'temperature' (from "
+                                        "cold.vdb:temperature), which is -0.5 at (0.05, 0.05, "
+                                        "0.05): the materials make n = 0.75 there (the lowest; "
+                                        "n < 1 in 125 voxels), and n must be >= 1"));
+    // With ior 1 the field bends nothing, and a second material's positive index that makes up
+    // for it keeps n >= 1.
+    scene.materials[0].ior = 1.0f;
+    CHECK_NOTHROW(checkRefractiveIndex(scene, fields, dense));
+    scene.materials[0].ior = 1.5f;
+    MaterialSpec glass;
+    glass.name = "glass";
+    glass.field = "n";
+    glass.ior = 2.0f;
+    scene.materials.push_back(glass);
+    fields.set("n", makeBoxField(glm::vec3(-1.0f), glm::vec3(1.0f), 0.25f, 0.0f, 0.1f), "n");
+    dense["n"] = resampleToDense(fields.get("n"), v);
+    CHECK_NOTHROW(checkRefractiveIndex(scene, fields, dense));
 }

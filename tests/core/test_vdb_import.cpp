@@ -289,3 +289,17 @@ TEST_CASE("a grid of an unregistered type is skipped by name; the rest of the fi
     CHECK_FALSE(gridNamed(info, "mystery").readable);
     CHECK(gridNamed(info, "density").activeVoxels == 1);
 }
+
+TEST_CASE("negative n is rejected: a material would map it below 1", "[vdb][bad-input]") {
+    ensureOpenVdbInitialized();
+    const std::string dir = scratchDir("vdb_negative_n");
+    auto grid = openvdb::FloatGrid::create(0.0f);
+    grid->setName("n");
+    grid->tree().setValue(openvdb::Coord(0, 0, 0), 0.5f);
+    grid->tree().setValue(openvdb::Coord(1, 0, 0), -0.25f);
+    openvdb::io::File(dir + "/n.vdb").write({grid});
+    CHECK(importError(dir + "/n.vdb") ==
+          dir +
+              "/n.vdb: grid 'n' (n) has 1 negative values (minimum -0.250000); n must be >= 0 (a "
+              "material maps it to n = 1 + f·(ior − 1) >= 1)");
+}

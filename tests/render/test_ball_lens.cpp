@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "render/smoothing.h"
+#include "support/fluence_peak.h"
 #include "support/photon_scene.h"
 
 using eikon::PhotonResultCpu;
@@ -47,14 +48,10 @@ double brightestDistanceBelow(const PhotonResultCpu& traced) {
     };
     // Voxels whose centre lies below the ball's rim, down to the box.
     const int top = int(std::floor((kCentre.y - kRadius - kRimWidth + 1.0f) / kVoxel)) - 1;
-    int best = 1;
-    for (int j = 1; j <= top; ++j)
-        if (at(j) > at(best)) best = j;
-    REQUIRE(best > 1);
-    REQUIRE(best < top);
-    const double a = at(best - 1), b = at(best), c = at(best + 1);
-    const double offset = 0.5 * (a - c) / (a - 2.0 * b + c);  // in voxels, within ±0.5
-    const double y = -1.0 + (double(best) + 0.5 + offset) * kVoxel;
+    bool interior = false;
+    const double peak = eikon::test::refinedPeak(at, 1, top, interior);
+    REQUIRE(interior);
+    const double y = -1.0 + (peak + 0.5) * kVoxel;
     return double(kCentre.y) - y;
 }
 
