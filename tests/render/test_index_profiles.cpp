@@ -287,7 +287,7 @@ TEST_CASE("a layer whose n grows linearly with height bends view rays into caten
 
 TEST_CASE("the index-profile scenes render on the CPU twin", "[profiles][scenes]") {
     for (const char* name : {"luneburg_lens", "mirage_slab", "three_glass_cube",
-                             "glass_sphere_floor_spot", "houdini_smoke_glass"}) {
+                             "glass_sphere_floor", "houdini_smoke_glass"}) {
         Scene scene = loadScene(test::sourcePath("data/scenes/" + std::string(name) + ".json"));
         scene.render.width = 40;
         scene.render.height = 30;
