@@ -1,8 +1,10 @@
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "apps/backend_choice.h"
 #include "apps/commands.h"
@@ -12,6 +14,8 @@
 #include "core/scene.h"
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
+#include "render/gpu_timer.h"
+#include "render/photon_radiance.h"
 
 namespace fs = std::filesystem;
 
@@ -58,6 +62,23 @@ void printStats(const std::vector<StageTime>& stages, double writeMs, bool softw
             " read ~0, the cpu column is the cost)\n");
 }
 
+// Photons traced this frame, their steps and steps per second of the photon stage's wall time
+// (its GPU time where timer queries give one, else its CPU column: llvmpipe runs GPU work inside
+// the GL calls and its queries read 0). Nothing when none were traced.
+void printPhotonStats(const FrameRenderer& renderer, const std::vector<StageTime>& stats,
+                      int64_t stepsBefore) {
+    const int64_t steps = renderer.photonSteps() - stepsBefore;
+    if (steps == 0) return;
+    double ms = 0.0;
+    for (const StageTime& s : stats)
+        if (s.name == "photons") ms += s.gpuMs > 0.0 ? s.gpuMs : s.cpuMs;
+    const int64_t photons = renderer.photonVolumes().photonsTraced;
+    std::printf("  photons: %lld traced, %lld steps (%.1f per photon), %.2f M steps/s\n",
+                static_cast<long long>(photons), static_cast<long long>(steps),
+                photons > 0 ? double(steps) / double(photons) : 0.0,
+                ms > 0.0 ? double(steps) / (ms * 1e3) : 0.0);
+}
+
 int runRender(const RenderOptions& o) {
     const Scene scene = sceneFor(o);
     std::error_code ec;
@@ -69,6 +90,7 @@ int runRender(const RenderOptions& o) {
     std::printf("%s\n", choice.description.c_str());
     const bool softwareGl =
         renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());
+    int64_t photonSteps = 0;  // before this frame
     for (int frame = scene.time.frameStart; frame <= scene.time.frameEnd; ++frame) {
         const Image image = renderer.render(frame);
         const auto t0 = std::chrono::steady_clock::now();
@@ -93,7 +115,9 @@ int runRender(const RenderOptions& o) {
             std::printf("frame %d: %dx%d pixels, volume %dx%dx%d\n", frame, image.width,
                         image.height, v.resolution.x, v.resolution.y, v.resolution.z);
             printStats(stats, writeMs, softwareGl);
+            printPhotonStats(renderer, stats, photonSteps);
         }
+        photonSteps = renderer.photonSteps();
         std::fflush(stdout);
     }
     return 0;
