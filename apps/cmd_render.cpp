@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -63,15 +64,16 @@ void printStats(const std::vector<StageTime>& stages, double writeMs, bool softw
 }
 
 // Photons traced this frame, their steps and steps per second of the photon stage's wall time
-// (its GPU time where timer queries give one, else its CPU column: llvmpipe runs GPU work inside
-// the GL calls and its queries read 0). Nothing when none were traced.
+// (the larger of its GPU and CPU columns: hardware GPUs run the trace after the call returns, while
+// llvmpipe runs it inside the GL calls and its timer queries read about 0). Nothing when none
+// were traced.
 void printPhotonStats(const FrameRenderer& renderer, const std::vector<StageTime>& stats,
                       int64_t stepsBefore) {
     const int64_t steps = renderer.photonSteps() - stepsBefore;
     if (steps == 0) return;
     double ms = 0.0;
     for (const StageTime& s : stats)
-        if (s.name == "photons") ms += s.gpuMs > 0.0 ? s.gpuMs : s.cpuMs;
+        if (s.name == "photons") ms += std::max(s.gpuMs, s.cpuMs);
     const int64_t photons = renderer.photonVolumes().photonsTraced;
     std::printf("  photons: %lld traced, %lld steps (%.1f per photon), %.2f M steps/s\n",
                 static_cast<long long>(photons), static_cast<long long>(steps),

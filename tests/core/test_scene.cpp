@@ -134,6 +134,15 @@ TEST_CASE("the shipped scenes hold what they say", "[scene]") {
         CHECK(scene.time.frameStart == 1);
         CHECK(scene.time.frameEnd == 10);
     }
+    SECTION("glass sphere over a floor: the floor is a receiver plane below the sphere") {
+        const eikon::Scene scene = eikon::loadScene((folder / "glass_sphere_floor.json").string());
+        REQUIRE(scene.receivers.size() == 1);
+        CHECK(scene.receivers[0].axis == 1);
+        CHECK(scene.receivers[0].facing == 1);
+        CHECK(scene.receivers[0].method == eikon::ReceiverMethod::Plane);
+        REQUIRE(scene.sources.size() == 2);
+        CHECK(scene.receivers[0].position < scene.sources[1].center.y - scene.sources[1].radius);
+    }
 }
 
 TEST_CASE("the example in docs/scene-format.md parses", "[scene]") {
