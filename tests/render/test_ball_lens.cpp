@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/refraction_volume.h"
 #include "render/smoothing.h"
 #include "support/fluence_peak.h"
 #include "support/photon_scene.h"
@@ -37,8 +38,8 @@ double paraxialFocalLength() {
 }
 
 // The smoothed fluence along the axis below the ball, and the distance from the ball's centre of
-// its maximum, refined to a fraction of a voxel by a parabola through the peak and its
-// neighbours (the caustic's peak is smooth after the 3×3×3 filter).
+// its brightest stretch: the centre of the samples within 0.5 % of the maximum (a focus is a
+// plateau several voxels long, whose single highest voxel is noise).
 double brightestDistanceBelow(const PhotonResultCpu& traced) {
     const std::vector<glm::vec4> smoothed =
         eikon::smoothVolumeCpu(traced.radiance, traced.resolution);
@@ -49,7 +50,7 @@ double brightestDistanceBelow(const PhotonResultCpu& traced) {
     // Voxels whose centre lies below the ball's rim, down to the box.
     const int top = int(std::floor((kCentre.y - kRadius - kRimWidth + 1.0f) / kVoxel)) - 1;
     bool interior = false;
-    const double peak = eikon::test::refinedPeak(at, 1, top, interior);
+    const double peak = eikon::test::plateauCentre(at, 1, top, 0.005, interior);
     REQUIRE(interior);
     const double y = -1.0 + (peak + 0.5) * kVoxel;
     return double(kCentre.y) - y;
@@ -103,4 +104,40 @@ TEST_CASE("ball lens, full beam: aberration pulls the brightest point toward the
         // Four times the photons: the same position, within a quarter voxel.
         if (side == 256) CHECK(std::abs(d - first) * kRadius < 0.25 * kVoxel);
     }
+}
+
+TEST_CASE("ball lens, paraxial beam: the adaptive octree step against a fixed one-voxel step",
+          "[photons][lens][octree]") {
+    // Issue 3's measurement, in one run: photon steps taken and the focus error with the octree's
+    // adaptive steps (Sun et al.'s ε = 0.005, ε' = 0.02, up to 8 voxels) and with every step one
+    // voxel (ε = ε' = 0). Measured: adaptive 227,979 steps, focus 1.38 voxels beyond the
+    // formula; fixed 676,947 steps, 1.20 voxels: 3.0x fewer steps for 0.19 voxel, since the
+    // octree keeps one-voxel steps where n varies (the ball) and takes long ones in the air. Both
+    // errors are mostly the focus plateau's asymmetry after smoothing, not the march.
+    const float distance = 40.0f;
+    const float coneDeg = glm::degrees(std::atan(kRadius / 5.0f / distance));
+    const auto light = PhotonScene::spotLight(kCentre + glm::vec3(0.0f, distance, 0.0f),
+                                              glm::vec3(0.0f, -1.0f, 0.0f), glm::vec3(1.0f),
+                                              coneDeg, 0.05f * coneDeg);
+    eikon::OctreeSettings fixed;
+    fixed.epsilon = fixed.epsilonPrime = 0.0f;
+    fixed.minStepVoxels = 1.0f;
+    PhotonSettings settings;
+    settings.photonsPerSide = 96;
+    const double f = paraxialFocalLength();
+    const double expected = 1.0 / (1.0 / f - 1.0 / double(distance));
+
+    const PhotonResultCpu adaptive =
+        PhotonScene(kRes, kIor, glm::vec3(0.0f), light, ballField).trace(settings);
+    const PhotonResultCpu oneVoxel =
+        PhotonScene(kRes, kIor, glm::vec3(0.0f), light, ballField, fixed).trace(settings);
+    const double adaptiveError = std::abs(brightestDistanceBelow(adaptive) - expected) / kVoxel;
+    const double fixedError = std::abs(brightestDistanceBelow(oneVoxel) - expected) / kVoxel;
+    INFO("adaptive: " << adaptive.steps << " steps, focus error " << adaptiveError
+                      << " voxels; fixed one-voxel: " << oneVoxel.steps << " steps, " << fixedError
+                      << " voxels");
+    CHECK(adaptive.photonsTraced == oneVoxel.photonsTraced);
+    CHECK(adaptive.steps * 2 < oneVoxel.steps);
+    CHECK(adaptiveError < 1.5);
+    CHECK(fixedError < 1.5);
 }
