@@ -2,6 +2,7 @@
 
 #include "core/atomic_write.h"
 #include "core/error.h"
+#include "core/vdb_file_id.h"
 #include "core/vdb_import.h"
 
 namespace eikon {
@@ -35,6 +36,7 @@ void exportVdb(const std::string& path, const FieldRegistry& registry,
         meta.insertMeta("creator", openvdb::StringMetadata("Eikon"));
         file.write(grids, meta);
         file.close();
+        makeVdbFileIdDeterministic(partial);  // the same grids, the same bytes
     });
 }
 
