@@ -17,6 +17,7 @@
 #include "render/volume_kernels_cpu.h"
 #include "support/backends.h"
 #include "support/fluence_peak.h"
+#include "support/linear_n2_medium.h"
 #include "support/photon_scene.h"
 #include "support/scene_builders.h"
 #include "support/test_paths.h"
@@ -101,15 +102,7 @@ glm::dvec3 catenaryExit(const LinearLayers& m, glm::dvec3 x0, glm::dvec3 dir, gl
         x.y = yStar + (c / g) * std::cosh(a + g * u / c);
         return x;
     };
-    auto inside = [](glm::dvec3 x) {
-        return std::abs(x.x) <= 1.0 && std::abs(x.y) <= 1.0 && std::abs(x.z) <= 1.0;
-    };
-    double lo = 0.0, hi = 1e-3;
-    while (inside(at(hi))) lo = hi, hi += 1e-3;
-    for (int i = 0; i < 60; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (inside(at(mid)) ? lo : hi) = mid;
-    }
+    const double lo = test::boxExitParameter(at);
     exitDir = glm::normalize(horizontal + glm::dvec3(0.0, std::sinh(a + g * lo / c), 0.0));
     return at(lo);
 }

@@ -4,10 +4,27 @@
 // the parabola x(τ) = x0 + p0 τ + (∇n²/4) τ², p0 = n(x0)·dir. Shared by the curved view ray and
 // photon tests.
 #include <cmath>
+#include <functional>
 
 #include <glm/vec3.hpp>
 
 namespace eikon::test {
+
+// The parameter where a closed-form path at(t), starting inside the box [-1, 1]³ at t = 0, first
+// leaves it: marched in steps of 1e-3 to the first point outside, then bisected to double
+// precision. Shared by the closed-form media of the curved-ray tests.
+inline double boxExitParameter(const std::function<glm::dvec3(double)>& at) {
+    auto inside = [](glm::dvec3 x) {
+        return std::abs(x.x) <= 1.0 && std::abs(x.y) <= 1.0 && std::abs(x.z) <= 1.0;
+    };
+    double lo = 0.0, hi = 1e-3;
+    while (inside(at(hi))) lo = hi, hi += 1e-3;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (inside(at(mid)) ? lo : hi) = mid;
+    }
+    return lo;
+}
 
 constexpr float kN0 = 1.2f;     // n at y = -1
 constexpr float kAlpha = 0.3f;  // d(n²)/dy
@@ -24,16 +41,7 @@ inline glm::dvec3 linearN2Exit(glm::dvec3 x0, glm::dvec3 dir) {
     const glm::dvec3 p0 = n0 * dir;
     const glm::dvec3 a(0.0, kAlpha / 4.0, 0.0);
     auto at = [&](double t) { return x0 + p0 * t + a * (t * t); };
-    auto inside = [](glm::dvec3 x) {
-        return std::abs(x.x) <= 1.0 && std::abs(x.y) <= 1.0 && std::abs(x.z) <= 1.0;
-    };
-    double lo = 0.0, hi = 1e-3;
-    while (inside(at(hi))) lo = hi, hi += 1e-3;
-    for (int i = 0; i < 60; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (inside(at(mid)) ? lo : hi) = mid;
-    }
-    return at(lo);
+    return at(boxExitParameter(at));
 }
 
 }  // namespace eikon::test
