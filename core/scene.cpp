@@ -526,6 +526,9 @@ PhotonRenderSettings readPhotons(const Value& value) {
     if (auto threshold = object.optional("flux_threshold")) {
         photons.fluxThreshold = threshold->floatNumber(Range::closedOpen(0.0, 1.0));
     }
+    if (auto kappa = object.optional("kappa_tolerance")) {
+        photons.kappaTolerance = kappa->floatNumber(Range::atLeast(0.0));
+    }
     object.finish();
     return photons;
 }

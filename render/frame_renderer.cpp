@@ -131,6 +131,21 @@ std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
     return key;
 }
 
+// The octree's: the ∇n volume's inputs, the octree settings, and, where extinction limits its
+// steps, the materials' extinction (the field versions are in the ∇n inputs already).
+std::vector<unsigned char> octreeInputs(const ViewSetup& setup,
+                                        const std::vector<unsigned char>& gradientKey,
+                                        const OctreeSettings& settings) {
+    std::vector<unsigned char> key = gradientKey;
+    appendBytes(key, &settings, sizeof(settings));
+    if (settings.kappaTolerance > 0.0f)
+        for (int m = 0; m < setup.params.resolution.w; ++m) {
+            appendBytes(key, &setup.params.materials[m].absorption, sizeof(glm::vec4));
+            appendBytes(key, &setup.params.materials[m].scattering, sizeof(glm::vec4));
+        }
+    return key;
+}
+
 }  // namespace
 
 int FrameRenderer::environmentLoads() const {
@@ -183,7 +198,10 @@ Image FrameRenderer::render(int frame) {
     std::vector<unsigned char> refractionInputs;
     if (curved || photons) refractionInputs = gradientInputs(setup, slotGrids);
     const bool gradientChanged = (curved || photons) && refractionInputs != gradientInputs_;
-    const bool octreeChanged = photons && refractionInputs != octreeInputs_;
+    const OctreeSettings octreeSettings = octreeSettingsFor(scene_);
+    std::vector<unsigned char> octreeKey;
+    if (photons) octreeKey = octreeInputs(setup, refractionInputs, octreeSettings);
+    const bool octreeChanged = photons && octreeKey != octreeInputs_;
     // n < 1 from a negative field is an input error, stopped before any stage uses it.
     if (gradientChanged || octreeChanged) checkRefractiveIndex(scene_, fields_, dense_);
     const PhotonSettings photonSettings = photonSettingsFor(scene_);
@@ -199,7 +217,7 @@ Image FrameRenderer::render(int frame) {
         }
         if (octreeChanged) {
             timer_->begin("octree");
-            octreeCpu_ = computeOctreeCpu(setup, gradientCpu_);
+            octreeCpu_ = computeOctreeCpu(setup, gradientCpu_, octreeSettings, slotGrids);
             timer_->end();
         }
         if (photonsChanged) {
@@ -223,7 +241,8 @@ Image FrameRenderer::render(int frame) {
             curved ? gradientCpu_ : noGradient, photons ? &photonsCpu_ : nullptr, &environment);
         timer_->end();
         commitInputs(gradientChanged, octreeChanged, photonsChanged, lightsChanged,
-                     std::move(refractionInputs), std::move(photonKey), std::move(lightInputs));
+                     std::move(refractionInputs), std::move(octreeKey), std::move(photonKey),
+                     std::move(lightInputs));
         return image;
     }
     timer_->begin("upload");
@@ -231,7 +250,8 @@ Image FrameRenderer::render(int frame) {
     paramsBuffer_->upload(setup.params);
     timer_->end();
     if (gradientChanged || octreeChanged)
-        refractionGpu_->compute(setup, *textures_, {}, timer_.get(), /*withOctree=*/photons);
+        refractionGpu_->compute(setup, *textures_, octreeSettings, timer_.get(),
+                                /*withOctree=*/photons);
     if (photonsChanged) {
         if (!photonsGpu_) photonsGpu_ = std::make_unique<PhotonRadianceGpu>(exactPhotonMath_);
         photonsGpu_->compute(setup, *textures_, *refractionGpu_, photonSettings, timer_.get());
@@ -239,7 +259,8 @@ Image FrameRenderer::render(int frame) {
     }
     if (lightsChanged) lightVolumesGpu_->compute(setup, *textures_, timer_.get());
     commitInputs(gradientChanged, octreeChanged, photonsChanged, lightsChanged,
-                 std::move(refractionInputs), std::move(photonKey), std::move(lightInputs));
+                 std::move(refractionInputs), std::move(octreeKey), std::move(photonKey),
+                 std::move(lightInputs));
     return viewPass_->render(
         setup, *textures_, *lightVolumesGpu_, curved ? refractionGpu_->gradientTexture() : 0u,
         photons ? photonsGpu_.get() : nullptr, timer_.get(), environment_->texture());
@@ -247,9 +268,10 @@ Image FrameRenderer::render(int frame) {
 
 void FrameRenderer::commitInputs(bool gradientChanged, bool octreeChanged, bool photonsChanged,
                                  bool lightsChanged, std::vector<unsigned char> refractionInputs,
+                                 std::vector<unsigned char> octreeKey,
                                  std::vector<unsigned char> photonKey,
                                  std::vector<unsigned char> lightInputs) {
-    if (octreeChanged) octreeInputs_ = refractionInputs;
+    if (octreeChanged) octreeInputs_ = std::move(octreeKey);
     if (gradientChanged) {
         gradientInputs_ = std::move(refractionInputs);
         ++gradientUpdates_;

@@ -73,7 +73,8 @@ private:
     // Records what the stages that ran were computed from, and counts them.
     void commitInputs(bool gradientChanged, bool octreeChanged, bool photonsChanged,
                       bool lightsChanged, std::vector<unsigned char> refractionInputs,
-                      std::vector<unsigned char> photonKey, std::vector<unsigned char> lightInputs);
+                      std::vector<unsigned char> octreeKey, std::vector<unsigned char> photonKey,
+                      std::vector<unsigned char> lightInputs);
 
     Scene scene_;
     Backend backend_;

@@ -30,6 +30,9 @@ class VolumeTextures;
 // medium that stay still keep their photons, so noise does not flicker in an animation, and a
 // frame change alone traces nothing.
 PhotonSettings photonSettingsFor(const Scene& scene);
+// The octree the photons march through: the paper's tolerances, and the scene's
+// render.photons.kappa_tolerance.
+OctreeSettings octreeSettingsFor(const Scene& scene);
 
 struct PhotonRadianceCpu {
     std::vector<glm::vec4> radiance;     // smoothed; rgb = Σ flux·length (see photon_tracing.h)

@@ -13,6 +13,12 @@ PhotonSettings photonSettingsFor(const Scene& scene) {
     return s;
 }
 
+OctreeSettings octreeSettingsFor(const Scene& scene) {
+    OctreeSettings s;
+    s.kappaTolerance = scene.render.photons.kappaTolerance;
+    return s;
+}
+
 PhotonRadianceCpu computePhotonRadianceCpu(const ViewSetup& setup,
                                            const std::vector<const DenseGrid*>& slotGrids,
                                            const RefractionVolumeCpu& gradient,

@@ -29,6 +29,9 @@ struct OctreeSettings {
     float epsilonPrime = 0.02f;    // a node flatter than this is a leaf with steps capped...
     float stepLimitVoxels = 8.0f;  // ...at this
     float minStepVoxels = 1.0f;    // Δs_max where no node of level ≥ 1 is within epsilonPrime
+    // Optical depth a node's extinction may vary by across it and still be a leaf (not in the
+    // paper: shaders/shared/octree.h); ≤ 0: κ does not limit steps.
+    float kappaTolerance = 0.0f;
 };
 
 // Δs_max of a node flat within ε (EK_UNLIMITED_STEP in shaders/shared/octree.h).
@@ -47,9 +50,11 @@ float octreeStepInScene(const ViewSetup& setup, float voxels);
 // CPU twins, parallel over voxels; results do not depend on the thread count.
 RefractionVolumeCpu computeIndexGradientCpu(const ViewSetup& setup,
                                             const std::vector<const DenseGrid*>& slotGrids);
-// From the gradient volume's n (w).
+// From the gradient volume's n (w) and, for settings.kappaTolerance, the extinction of the field
+// volumes (slotGrids, as for computeIndexGradientCpu; none: κ ≡ 0).
 RefractionVolumeCpu computeOctreeCpu(const ViewSetup& setup, const RefractionVolumeCpu& gradient,
-                                     const OctreeSettings& settings = {});
+                                     const OctreeSettings& settings = {},
+                                     const std::vector<const DenseGrid*>& slotGrids = {});
 
 class RefractionVolumesGpu {
 public:

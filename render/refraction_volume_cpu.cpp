@@ -14,16 +14,18 @@ struct RefractionKernelCpu : VolumeAccessCpu {
 #include "shaders/shared/refraction.h"
 };
 
-// What the octree shaders see: the pyramid SSBO.
+// What the octree shaders see: the pyramid SSBO, n, and κ at voxel centres (none without fields).
 struct OctreeKernelCpu {
-    const vec2* pyramid = nullptr;
+    const vec4* pyramid = nullptr;
     const vec4* gradient = nullptr;  // w: n
+    VolumeAccessCpu* fields = nullptr;
     ivec3 res = ivec3(0);
-    vec2 fetchPyramid(int index) const { return pyramid[index]; }
+    vec4 fetchPyramid(int index) const { return pyramid[index]; }
     float fetchIndex(ivec3 v) const {
         return gradient[(size_t(v.z) * size_t(res.y) + size_t(v.y)) * size_t(res.x) + size_t(v.x)]
             .w;
     }
+    float fetchKappa(ivec3 v) const { return fields ? fields->voxelExtinctionMax(v) : 0.0f; }
 
 #define EK_OCTREE_LEAF_RANGE
 #include "shaders/shared/octree.h"
@@ -57,11 +59,13 @@ void forEachVoxel(glm::ivec3 res, const F& f) {
 }
 
 // Level 0 from n, then each level from the one below, level by level as the GPU passes do.
-std::vector<glm::vec2> buildPyramid(glm::ivec3 res, const RefractionVolumeCpu& gradient) {
+std::vector<glm::vec4> buildPyramid(glm::ivec3 res, const RefractionVolumeCpu& gradient,
+                                    shared::VolumeAccessCpu* fields) {
     shared::OctreeKernelCpu k;
     const int levels = k.pyramidLevelCount(res);
-    std::vector<glm::vec2> pyramid(octreePyramidNodeCount(res));
+    std::vector<glm::vec4> pyramid(octreePyramidNodeCount(res));
     k.gradient = gradient.data();
+    k.fields = fields;
     k.res = res;
     forEachVoxel(res, [&](glm::ivec3 v, size_t i) { pyramid[i] = k.pyramidLeafRange(res, v); });
     k.pyramid = pyramid.data();
@@ -108,16 +112,22 @@ RefractionVolumeCpu computeIndexGradientCpu(const ViewSetup& setup,
 }
 
 RefractionVolumeCpu computeOctreeCpu(const ViewSetup& setup, const RefractionVolumeCpu& gradient,
-                                     const OctreeSettings& settings) {
+                                     const OctreeSettings& settings,
+                                     const std::vector<const DenseGrid*>& slotGrids) {
     const glm::ivec3 res = resolutionOf(setup);
-    const std::vector<glm::vec2> pyramid = buildPyramid(res, gradient);
+    shared::VolumeAccessCpu fields{setup.params};
+    for (size_t s = 0; s < slotGrids.size(); ++s) fields.fields[s] = slotGrids[s]->values.data();
+    const std::vector<glm::vec4> pyramid =
+        buildPyramid(res, gradient, slotGrids.empty() ? nullptr : &fields);
     shared::OctreeKernelCpu k;
     k.pyramid = pyramid.data();
     const float stepLimit = octreeStepInScene(setup, settings.stepLimitVoxels);
     const float minStep = octreeStepInScene(setup, settings.minStepVoxels);
+    const float voxelLength = octreeStepInScene(setup, 1.0f);
     RefractionVolumeCpu out(gradient.size());
     forEachVoxel(res, [&](glm::ivec3 v, size_t i) {
-        out[i] = k.octreeLabel(res, v, settings.epsilon, settings.epsilonPrime, stepLimit, minStep);
+        out[i] = k.octreeLabel(res, v, settings.epsilon, settings.epsilonPrime, stepLimit, minStep,
+                               settings.kappaTolerance, voxelLength);
     });
     return out;
 }

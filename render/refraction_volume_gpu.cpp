@@ -61,7 +61,7 @@ void RefractionVolumesGpu::allocate(glm::ivec3 res) {
     const size_t nodes = octreePyramidNodeCount(res);
     glGenBuffers(1, &pyramid_);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, pyramid_);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(nodes * sizeof(glm::vec2)), nullptr,
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(nodes * sizeof(glm::vec4)), nullptr,
                  GL_DYNAMIC_COPY);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     if (glGetError() != GL_NO_ERROR)
@@ -113,6 +113,8 @@ void RefractionVolumesGpu::computeOctree(const ViewSetup& setup, const OctreeSet
     labelProgram_->setFloat("epsilonPrime", settings.epsilonPrime);
     labelProgram_->setFloat("stepLimit", octreeStepInScene(setup, settings.stepLimitVoxels));
     labelProgram_->setFloat("minStep", octreeStepInScene(setup, settings.minStepVoxels));
+    labelProgram_->setFloat("kappaTolerance", settings.kappaTolerance);
+    labelProgram_->setFloat("voxelLength", octreeStepInScene(setup, 1.0f));
     glBindImageTexture(kVolumeImageUnit, octree_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatchCovering(res);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);

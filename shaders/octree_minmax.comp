@@ -4,15 +4,17 @@
 // with a storage barrier between them.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-#include "shared/platform.h"
+// The params SSBO and the field textures, for κ at voxel centres (optics.h voxelExtinctionMax).
+#include "volume_bindings.glsl"
 
-layout(std430, binding = 3) buffer PyramidBlock { vec2 pyramid[]; };
+layout(std430, binding = 3) buffer PyramidBlock { vec4 pyramid[]; };
 layout(rgba32f, binding = 2) readonly uniform image3D gradientVolume;  // w: n
 uniform ivec3 resolution;  // voxels
 uniform int level;
 
-vec2 fetchPyramid(int index) { return pyramid[index]; }
+vec4 fetchPyramid(int index) { return pyramid[index]; }
 float fetchIndex(ivec3 voxel) { return imageLoad(gradientVolume, voxel).w; }
+float fetchKappa(ivec3 voxel) { return voxelExtinctionMax(voxel); }
 
 #define EK_OCTREE_LEAF_RANGE
 #include "shared/octree.h"

@@ -1,6 +1,7 @@
 // The octree of Sun et al. 2008 (§4.2, amended in §5.3) as a dense volume, the same on the GPU and
-// in the CPU twin. Functions only; needs from the includer `vec2 fetchPyramid(int index)`, the
-// (n_min, n_max) stored at a flat pyramid index (pyramidNodeIndex).
+// in the CPU twin. Functions only; needs from the includer `vec4 fetchPyramid(int index)`, the
+// (n_min, n_max, κ_min, κ_max) stored at a flat pyramid index (pyramidNodeIndex), κ being the
+// largest channel of the extinction at voxel centres.
 //
 // Pyramid: level 0 holds one node per voxel: the range of n over the voxel's 5×5×5
 // neighbourhood (pyramidLeafRange below says why); a node of level k
@@ -19,6 +20,11 @@
 // sizes" §5.3 introduces: larger than the finer nodes' boundaries allow, yet capped.
 // When no node of level 1 or coarser has r < ε', the voxel gets label 0 and Δs_max = minStep
 // (the user's minimum step): near strong variation, marching takes the minimum step.
+// Extension (not in the paper, off when κ_tol ≤ 0): a node qualifies only if, besides, its
+// extinction varies by less than κ_tol in optical depth across it, (κ_max − κ_min) × its edge
+// < κ_tol. A photon step takes κ at its midpoint for the whole step, which is exact only where κ
+// is constant: without this, a flat n lets a photon cross a thin absorber, or skip it, in one
+// long step.
 // Steps are in scene units.
 
 #define EK_UNLIMITED_STEP 1e30f
@@ -56,51 +62,64 @@ int pyramidNodeIndex(ivec3 res, int level, ivec3 node) {
 
 #ifdef EK_OCTREE_LEAF_RANGE
 // Level 0 (with EK_OCTREE_LEAF_RANGE; needs `float fetchIndex(ivec3 voxel)`, n at a voxel
-// centre): (n_min, n_max) over the voxels within two of `voxel` along every axis, clamped at the
-// faces. A march inside a voxel samples ∇n trilinearly from centres up to one voxel away, and
-// each of those is a central difference reaching one voxel further: n up to two voxels away
-// bends a path inside this voxel. A node is flat only if all of that is flat; with n at its own
-// centres alone, a voxel beside a sharp rim looked flat, allowed an unlimited step, and the
-// rim's ∇n sampled at its start reversed photons.
-vec2 pyramidLeafRange(ivec3 res, ivec3 voxel) {
-    vec2 range = vec2(EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP);
+// centre, and `float fetchKappa(ivec3 voxel)`, the extinction's largest channel there):
+// (n_min, n_max) over the voxels within two of `voxel` along every axis, clamped at the faces. A
+// march inside a voxel samples ∇n trilinearly from centres up to one voxel away, and each of
+// those is a central difference reaching one voxel further: n up to two voxels away bends a path
+// inside this voxel. A node is flat only if all of that is flat; with n at its own centres alone,
+// a voxel beside a sharp rim looked flat, allowed an unlimited step, and the rim's ∇n sampled at
+// its start reversed photons. (κ_min, κ_max) over the voxels within one: κ is sampled
+// trilinearly, with no difference.
+vec4 pyramidLeafRange(ivec3 res, ivec3 voxel) {
+    vec4 range = vec4(EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP, EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP);
     for (int dz = -2; dz <= 2; ++dz)
         for (int dy = -2; dy <= 2; ++dy)
             for (int dx = -2; dx <= 2; ++dx) {
-                const float n =
-                    fetchIndex(clamp(voxel + ivec3(dx, dy, dz), ivec3(0), res - ivec3(1)));
-                range = vec2(min(range.x, n), max(range.y, n));
+                const ivec3 v = clamp(voxel + ivec3(dx, dy, dz), ivec3(0), res - ivec3(1));
+                const float n = fetchIndex(v);
+                range.x = min(range.x, n);
+                range.y = max(range.y, n);
+                if (abs(dx) <= 1 && abs(dy) <= 1 && abs(dz) <= 1) {
+                    const float kappa = fetchKappa(v);
+                    range.z = min(range.z, kappa);
+                    range.w = max(range.w, kappa);
+                }
             }
     return range;
 }
 #endif
 
-// (n_min, n_max) of node `node` at level ≥ 1 from its up to 8 children at level − 1; children
-// past the edge of a non-power-of-two axis are clamped onto the last one, which changes neither
-// the minimum nor the maximum.
-vec2 pyramidNodeFromChildren(ivec3 res, int level, ivec3 node) {
+// The ranges of node `node` at level ≥ 1 from its up to 8 children at level − 1; children past
+// the edge of a non-power-of-two axis are clamped onto the last one, which changes neither the
+// minima nor the maxima.
+vec4 pyramidNodeFromChildren(ivec3 res, int level, ivec3 node) {
     const ivec3 last = pyramidLevelSize(res, level - 1) - ivec3(1);
-    vec2 range = vec2(EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP);
+    vec4 range = vec4(EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP, EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP);
     for (int dz = 0; dz < 2; ++dz)
         for (int dy = 0; dy < 2; ++dy)
             for (int dx = 0; dx < 2; ++dx) {
                 const ivec3 child = min(node * ivec3(2) + ivec3(dx, dy, dz), last);
-                const vec2 c = fetchPyramid(pyramidNodeIndex(res, level - 1, child));
-                range = vec2(min(range.x, c.x), max(range.y, c.y));
+                const vec4 c = fetchPyramid(pyramidNodeIndex(res, level - 1, child));
+                range = vec4(min(range.x, c.x), max(range.y, c.y), min(range.z, c.z),
+                             max(range.w, c.w));
             }
     return range;
 }
 
 // x: label (level, as a float); y: Δs_max in scene units; z, w: n_min, n_max of the labelled
-// node. See the rule at the top of this file.
+// node. See the rule at the top of this file; voxelLength is the edge of a voxel (scene units)
+// that κ_tol's optical depth is measured with.
 vec4 octreeLabel(ivec3 res, ivec3 voxel, float epsilon, float epsilonPrime, float stepLimit,
-                 float minStep) {
+                 float minStep, float kappaTolerance, float voxelLength) {
     for (int level = pyramidLevelCount(res) - 1; level >= 1; --level) {
-        const vec2 r = fetchPyramid(pyramidNodeIndex(res, level, voxel / ivec3(1 << level)));
+        const vec4 r = fetchPyramid(pyramidNodeIndex(res, level, voxel / ivec3(1 << level)));
+        if (kappaTolerance > 0.0f &&
+            !((r.w - r.z) * (float(1 << level) * voxelLength) < kappaTolerance))
+            continue;
         const float range = r.y - r.x;
         if (range < epsilon) return vec4(float(level), EK_UNLIMITED_STEP, r.x, r.y);
         if (range < epsilonPrime) return vec4(float(level), stepLimit, r.x, r.y);
     }
-    const vec2 r0 = fetchPyramid(pyramidNodeIndex(res, 0, voxel));
+    const vec4 r0 = fetchPyramid(pyramidNodeIndex(res, 0, voxel));
     return vec4(0.0f, minStep, r0.x, r0.y);
 }

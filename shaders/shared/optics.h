@@ -40,6 +40,17 @@ vec3 extinctionAt(vec3 indexPos) {
     return kappa;
 }
 
+// The largest channel of the extinction at the centre of `voxel` (the octree's κ ranges,
+// octree.h), by the sum extinctionAt takes.
+float voxelExtinctionMax(ivec3 voxel) {
+    vec3 kappa = vec3(0.0f);
+    for (int m = 0; m < params.resolution.w; ++m) {
+        const float f = fetchVolume(params.materials[m].slot.x, voxel).x;
+        kappa += f * (vec3(params.materials[m].absorption) + vec3(params.materials[m].scattering));
+    }
+    return max(kappa.x, max(kappa.y, kappa.z));
+}
+
 // exp(−∫κ) from x toward a light, up to `maxDistance` or the volume's edge.
 vec3 transmittanceToward(vec3 x, vec3 toLight, float maxDistance) {
     const float tEnd = min(intersectVolume(x, toLight).y, maxDistance);

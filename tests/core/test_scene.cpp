@@ -908,3 +908,14 @@ TEST_CASE("receivers parse with their defaults and name their mistakes", "[scene
         CHECK(f.where == "smoke.json:/receivers");
     }
 }
+
+TEST_CASE("render.photons.kappa_tolerance: default 0.1, 0 turns it off, negative is refused",
+          "[scene][photons]") {
+    CHECK(eikon::parseScene(sceneWith(""), "smoke.json").render.photons.kappaTolerance == 0.1f);
+    CHECK(eikon::parseScene(sceneWith(R"("render": {"photons": {"kappa_tolerance": 0}})"),
+                            "smoke.json")
+              .render.photons.kappaTolerance == 0.0f);
+    const Failure f = failureOf(sceneWith(R"("render": {"photons": {"kappa_tolerance": -1}})"));
+    CHECK(f.where == "smoke.json:/render/photons/kappa_tolerance");
+    CHECK_THAT(f.reason, Contains(">= 0"));
+}

@@ -45,7 +45,7 @@ struct PhotonScene {
         setup = makeViewSetup(scene, field.volume,
                               makeCameraFrame(scene.camera, field.volume.bounds, 4, 4));
         gradient = computeIndexGradientCpu(setup, {&field});
-        octree = computeOctreeCpu(setup, gradient, octreeSettings);
+        octree = computeOctreeCpu(setup, gradient, octreeSettings, {&field});
     }
 
     static LightSpec directionalLight(glm::vec3 direction, glm::vec3 color) {
