@@ -16,7 +16,6 @@
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 #include "render/gpu_timer.h"
-#include "render/photon_radiance.h"
 
 namespace fs = std::filesystem;
 
@@ -74,7 +73,7 @@ void printPhotonStats(const FrameRenderer& renderer, const std::vector<StageTime
     double ms = 0.0;
     for (const StageTime& s : stats)
         if (s.name == "photons") ms += std::max(s.gpuMs, s.cpuMs);
-    const int64_t photons = renderer.photonVolumes().photonsTraced;
+    const int64_t photons = renderer.lastPhotonsTraced();
     std::printf("  photons: %lld traced, %lld steps (%.1f per photon), %.2f M steps/s\n",
                 static_cast<long long>(photons), static_cast<long long>(steps),
                 photons > 0 ? double(steps) / double(photons) : 0.0,

@@ -286,6 +286,11 @@ void FrameRenderer::commitInputs(bool gradientChanged, bool octreeChanged, bool 
     }
 }
 
+int64_t FrameRenderer::lastPhotonsTraced() const {
+    if (backend_ == Backend::Gpu) return photonsGpu_ ? photonsGpu_->lastPhotonsTraced() : 0;
+    return photonsCpu_.photonsTraced;
+}
+
 PhotonRadianceCpu FrameRenderer::photonVolumes() const {
     if (backend_ == Backend::Gpu)
         return photonsGpu_ ? photonsGpu_->download() : PhotonRadianceCpu{};

@@ -61,6 +61,8 @@ public:
     // settings changed), and the photon steps all those traces took together.
     int photonUpdates() const { return photonUpdates_; }
     int64_t photonSteps() const { return photonSteps_; }
+    // Photons that entered the box in the last trace (0 before any).
+    int64_t lastPhotonsTraced() const;
     // The smoothed photon volumes of the last trace (the GPU's read back), for tests; empty
     // when the scene has no photon lighting.
     PhotonRadianceCpu photonVolumes() const;

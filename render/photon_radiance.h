@@ -68,6 +68,8 @@ public:
     void bind() const;
     // Photon steps of the last compute (read back: 8 bytes).
     int64_t lastSteps() const;
+    // Photons of the last compute that entered the box (no read-back).
+    int64_t lastPhotonsTraced() const;
     // The smoothed volumes and the trace's totals, for tests.
     PhotonRadianceCpu download() const;
 

@@ -112,6 +112,10 @@ void PhotonRadianceGpu::uploadReceiverMap(const std::vector<glm::vec4>& map) {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
+int64_t PhotonRadianceGpu::lastPhotonsTraced() const {
+    return tracer_->photonsTraced();
+}
+
 int64_t PhotonRadianceGpu::lastSteps() const {
     return tracer_->stepsTaken();
 }

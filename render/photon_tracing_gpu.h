@@ -37,6 +37,8 @@ public:
     std::vector<glm::vec4> receiverMap() const;
     // Photon steps of the last trace (reads back one int64).
     int64_t stepsTaken() const;
+    // Photons of the last trace that entered the box (known on the host: no read-back).
+    int64_t photonsTraced() const { return host_.photonsTraced; }
     // For the passes that read the deposits on the GPU (render/photon_radiance_gpu.cpp): the
     // SSBO (6 int64 per voxel as (low, high) words, see shaders/photon_trace.comp) and its
     // fixed-point scales.

@@ -100,6 +100,8 @@ TEST_CASE("photon lighting: GPU volumes and image equal the CPU twin's", "[photo
     const PhotonRadianceCpu c = cpu.photonVolumes();
     REQUIRE(c.photonsTraced > 0);
     CHECK(g.photonsTraced == c.photonsTraced);
+    CHECK(gpu.lastPhotonsTraced() == c.photonsTraced);
+    CHECK(cpu.lastPhotonsTraced() == c.photonsTraced);
     CHECK(g.steps == c.steps);
     CHECK(gpu.photonSteps() == cpu.photonSteps());
     REQUIRE(g.radiance.size() == c.radiance.size());
