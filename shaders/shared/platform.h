@@ -4,7 +4,9 @@
 //  - no swizzles (write vec3(v), v.x); only vec4/ivec4/uvec4 and scalars inside shared structs,
 //    so std430 and C++ offsets agree without padding rules (a test checks them);
 //  - out/inout parameters through EK_OUT(T)/EK_INOUT(T);
-//  - constants through EK_CONST (a #define-free `const` in GLSL, `static constexpr` in C++).
+//  - constants through EK_CONST (a #define-free `const` in GLSL, `static constexpr` in C++);
+//  - EK_PRECISE (GLSL `precise`) on results that must round as written on both sides: GLSL
+//    compilers may fuse a·b − c·d into an fma or reassociate sums, C++ (no -mfma) does not.
 // Kernel files (view_march.h) hold only functions: C++ includes them inside a struct body so
 // that the shader's globals (params, fetchVoxel) become members; GLSL includes them at file scope.
 #ifndef EIKON_SHARED_PLATFORM_H
@@ -16,6 +18,7 @@
 #define EK_OUT(T) T&
 #define EK_INOUT(T) T&
 #define EK_CONST static constexpr
+#define EK_PRECISE
 #define EK_NAMESPACE_BEGIN \
     namespace eikon {      \
     namespace shared {     \
@@ -27,6 +30,7 @@
 #define EK_OUT(T) out T
 #define EK_INOUT(T) inout T
 #define EK_CONST const
+#define EK_PRECISE precise
 #define EK_NAMESPACE_BEGIN
 #define EK_NAMESPACE_END
 #endif

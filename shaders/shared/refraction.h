@@ -4,13 +4,8 @@
 // Each material adds (ior − 1) per unit of its field to vacuum's n = 1, so fields that fade out
 // fade to n = 1 and overlapping materials add their excess index.
 
-// `precise` keeps the GLSL compiler from reassociating the sum (Mesa turned f·(ior − 1) + n into
-// a different rounding, 1 ulp off the CPU twin); C++ already evaluates it as written.
-#ifdef __cplusplus
-#define EK_PRECISE
-#else
-#define EK_PRECISE precise
-#endif
+// EK_PRECISE (platform.h) keeps the GLSL compiler from reassociating the sum (Mesa turned
+// f·(ior − 1) + n into a different rounding, 1 ulp off the CPU twin).
 
 float refractiveIndexAt(vec3 indexPos) {
     EK_PRECISE float n = 1.0f;

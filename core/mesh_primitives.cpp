@@ -1,0 +1,73 @@
+#include "core/mesh_primitives.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+namespace eikon {
+
+TriangleMesh icosphere(glm::vec3 center, float radius, int subdivisions) {
+    // The unit icosahedron from three golden rectangles, wound outward.
+    const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+    std::vector<glm::vec3> unit = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                                   {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                                   {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    for (glm::vec3& p : unit) p = glm::normalize(p);
+    std::vector<glm::uvec3> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                     {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                     {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                     {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+    for (int s = 0; s < subdivisions; ++s) {
+        // Each edge's midpoint is made once, so neighbouring triangles share it (watertight).
+        std::map<std::pair<unsigned, unsigned>, unsigned> midpoints;
+        auto midpoint = [&](unsigned a, unsigned b) {
+            const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+            const auto found = midpoints.find(key);
+            if (found != midpoints.end()) return found->second;
+            unit.push_back(glm::normalize(unit[a] + unit[b]));
+            const auto index = unsigned(unit.size() - 1);
+            midpoints.emplace(key, index);
+            return index;
+        };
+        std::vector<glm::uvec3> finer;
+        finer.reserve(faces.size() * 4);
+        for (const glm::uvec3& f : faces) {
+            const unsigned ab = midpoint(f.x, f.y), bc = midpoint(f.y, f.z), ca = midpoint(f.z, f.x);
+            finer.push_back({f.x, ab, ca});
+            finer.push_back({f.y, bc, ab});
+            finer.push_back({f.z, ca, bc});
+            finer.push_back({ab, bc, ca});
+        }
+        faces = std::move(finer);
+    }
+    TriangleMesh mesh;
+    mesh.positions.reserve(unit.size());
+    for (const glm::vec3& p : unit) mesh.positions.push_back(center + radius * p);
+    mesh.triangles = std::move(faces);
+    return mesh;
+}
+
+TriangleMesh boxMesh(glm::vec3 min, glm::vec3 max) {
+    TriangleMesh mesh;
+    for (int i = 0; i < 8; ++i)  // bit 0: x, bit 1: y, bit 2: z at max
+        mesh.positions.push_back({(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y,
+                                  (i & 4) ? max.z : min.z});
+    mesh.triangles = {{0, 2, 3}, {0, 3, 1},   // z = min, normal −z
+                      {4, 5, 7}, {4, 7, 6},   // z = max, +z
+                      {0, 1, 5}, {0, 5, 4},   // y = min, −y
+                      {2, 6, 7}, {2, 7, 3},   // y = max, +y
+                      {0, 4, 6}, {0, 6, 2},   // x = min, −x
+                      {1, 3, 7}, {1, 7, 5}};  // x = max, +x
+    return mesh;
+}
+
+TriangleMesh translated(TriangleMesh mesh, glm::vec3 offset) {
+    for (glm::vec3& p : mesh.positions) p += offset;
+    return mesh;
+}
+
+}  // namespace eikon
