@@ -51,6 +51,35 @@ TriangleMesh icosphere(glm::vec3 center, float radius, int subdivisions) {
     return mesh;
 }
 
+TriangleMesh uvSphere(glm::vec3 center, float radius, int slices, int stacks) {
+    TriangleMesh mesh;
+    if (slices < 3 || stacks < 2) return mesh;
+    const double pi = 3.14159265358979323846;
+    mesh.positions.push_back(center + radius * glm::vec3(0.0f, 0.0f, 1.0f));  // north pole
+    for (int i = 1; i < stacks; ++i) {
+        const double theta = pi * i / stacks;
+        for (int j = 0; j < slices; ++j) {
+            const double phi = 2.0 * pi * j / slices;
+            mesh.positions.push_back(
+                center + radius * glm::vec3(float(std::sin(theta) * std::cos(phi)),
+                                            float(std::sin(theta) * std::sin(phi)),
+                                            float(std::cos(theta))));
+        }
+    }
+    mesh.positions.push_back(center + radius * glm::vec3(0.0f, 0.0f, -1.0f));  // south pole
+    const auto south = unsigned(mesh.positions.size() - 1);
+    auto ring = [&](int i, int j) { return unsigned(1 + (i - 1) * slices + (j % slices)); };
+    for (int j = 0; j < slices; ++j) mesh.triangles.push_back({0u, ring(1, j), ring(1, j + 1)});
+    for (int i = 1; i < stacks - 1; ++i)
+        for (int j = 0; j < slices; ++j) {
+            mesh.triangles.push_back({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1)});
+            mesh.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i, j + 1)});
+        }
+    for (int j = 0; j < slices; ++j)
+        mesh.triangles.push_back({south, ring(stacks - 1, j + 1), ring(stacks - 1, j)});
+    return mesh;
+}
+
 TriangleMesh boxMesh(glm::vec3 min, glm::vec3 max) {
     TriangleMesh mesh;
     for (int i = 0; i < 8; ++i)  // bit 0: x, bit 1: y, bit 2: z at max

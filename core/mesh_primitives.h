@@ -10,6 +10,11 @@ namespace eikon {
 // cut, which tests must allow for (polyhedronVolume gives it exactly).
 TriangleMesh icosphere(glm::vec3 center, float radius, int subdivisions);
 
+// A latitude/longitude sphere with poles on ±z: `slices` around, `stacks` from pole to pole,
+// 2·slices·(stacks − 1) triangles (100×51: 10,000; 200×201: 80,000), the layout of the mesh-to-
+// volume peer (../shared/peers/cpp/meshtovolume_peer.cpp) so that both voxelize the same mesh.
+TriangleMesh uvSphere(glm::vec3 center, float radius, int slices, int stacks);
+
 // An axis-aligned box as 12 triangles.
 TriangleMesh boxMesh(glm::vec3 min, glm::vec3 max);
 

@@ -71,6 +71,10 @@ TEST_CASE("generated meshes are closed and wound outward", "[voxelize]") {
     CHECK(signedVolume(sphere) > 0.98 * 4.0 / 3.0 * kPi);
     CHECK(signedVolume(sphere) < 4.0 / 3.0 * kPi);
     CHECK(signedVolume(octahedron(glm::vec3(0.0f), 1.0f)) == Approx(4.0 / 3.0));
+    const TriangleMesh uv = uvSphere(glm::vec3(0.0f), 1.0f, 100, 51);
+    CHECK(uv.triangles.size() == 10000);
+    CHECK(signedVolume(uv) > 0.99 * 4.0 / 3.0 * kPi);
+    CHECK(signedVolume(uv) < 4.0 / 3.0 * kPi);
 }
 
 TEST_CASE("a box whose face diagonals run through column centres covers exactly its volume",
