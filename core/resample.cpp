@@ -36,29 +36,74 @@ const Field& materialField(const Scene& scene, const FieldRegistry& fields, size
 
 }  // namespace
 
-RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields) {
+namespace {
+
+// The widest margin a mesh's blurred index needs around the mesh, in voxels.
+int meshMarginVoxels(const Scene& scene) {
+    int margin = 0;
+    for (const MeshObjectSpec& m : scene.meshes) margin = std::max(margin, m.blurRadiusVoxels + 2);
+    return margin;
+}
+
+float longestAxis(const Bounds3& b) {
+    const glm::vec3 size = b.size();
+    return std::max({size.x, size.y, size.z});
+}
+
+}  // namespace
+
+RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields,
+                                const std::vector<Bounds3>& meshBounds) {
     if (scene.materials.empty()) throw Error(scene.path, "the scene has no material");
+    if (meshBounds.size() != scene.meshes.size())
+        throw Error(scene.path, "the render volume needs the bounds of every mesh (" +
+                                    std::to_string(meshBounds.size()) + " of " +
+                                    std::to_string(scene.meshes.size()) + " given)");
+    std::vector<size_t> fieldMaterials;  // materials reading fields that sources write
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+        if (meshOfField(scene, scene.materials[m].field) < 0) fieldMaterials.push_back(m);
+    Bounds3 meshes;
+    for (const Bounds3& b : meshBounds) meshes = meshes.unite(b);
+    const float margin = float(meshMarginVoxels(scene));
+
     RenderVolume v;
     if (scene.volume.autoBounds) {
-        for (size_t m = 0; m < scene.materials.size(); ++m)
+        for (size_t m : fieldMaterials)
             v.bounds = v.bounds.unite(materialField(scene, fields, m).activeWorldBounds());
-        if (!v.bounds.valid())
+        if (!v.bounds.valid() && !meshes.valid())
             throw Error(scene.path + ":/volume/bounds",
                         "\"auto\" bounds are empty: the material fields have no active voxels");
     } else {
         v.bounds = scene.volume.bounds;
     }
     if (scene.volume.autoResolution) {
-        const Field& first = materialField(scene, fields, 0);
-        const openvdb::Vec3d vs = first.grid->voxelSize();
-        float voxel = float(std::min({vs.x(), vs.y(), vs.z()}));
+        float voxel = 0.0f;
+        if (!fieldMaterials.empty()) {
+            const openvdb::Vec3d vs = materialField(scene, fields, fieldMaterials[0]).grid->voxelSize();
+            voxel = float(std::min({vs.x(), vs.y(), vs.z()}));
+        } else {
+            // Meshes alone: N voxels along the longest axis, margins included.
+            const float n = float(std::min(scene.volume.maxResolution, kMeshVoxelsAcross));
+            voxel = scene.volume.autoBounds ? longestAxis(meshes) / std::max(1.0f, n - 2.0f * margin)
+                                            : longestAxis(v.bounds) / n;
+        }
+        if (scene.volume.autoBounds && meshes.valid())
+            v.bounds = v.bounds.unite({meshes.min - margin * voxel, meshes.max + margin * voxel});
         const glm::vec3 size = v.bounds.size();
-        const float longest = std::max({size.x, size.y, size.z});
-        voxel = std::max(voxel, longest / float(scene.volume.maxResolution));
+        voxel = std::max(voxel, longestAxis(v.bounds) / float(scene.volume.maxResolution));
         v.resolution = glm::max(glm::ivec3(1), glm::ivec3(glm::round(size / voxel)));
         v.resolution = glm::min(v.resolution, glm::ivec3(scene.volume.maxResolution));
     } else {
         v.resolution = scene.volume.resolution;
+        if (scene.volume.autoBounds && meshes.valid()) {
+            // Grown so that the margin is `margin` voxels of the grown volume:
+            // L' = L + 2·margin·L'/N per axis.
+            const glm::vec3 n(v.resolution);
+            const Bounds3 all = v.bounds.unite(meshes);
+            const glm::vec3 grown = all.size() / glm::max(glm::vec3(1e-6f), 1.0f - 2.0f * margin / n);
+            const glm::vec3 pad = 0.5f * (grown - all.size());
+            v.bounds = v.bounds.unite({meshes.min - pad, meshes.max + pad});
+        }
     }
     return v;
 }

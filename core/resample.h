@@ -2,6 +2,7 @@
 // From sparse OpenVDB fields to the dense render volume.
 #include <map>
 #include <string>
+#include <vector>
 
 #include "core/dense_grid.h"
 #include "core/field_registry.h"
@@ -10,10 +11,17 @@
 namespace eikon {
 
 // The render volume a scene asks for: its bounds ("auto": the union of the active world bounds
-// of every field a material reads) and resolution ("auto": that of the first such field, capped
-// at max_resolution along the longest axis, keeping voxels cubic). Throws eikon::Error when a
-// material's field is missing or empty.
-RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields);
+// of every field a material reads and of the meshes, each mesh grown by its blur radius + 2
+// voxels so that its blurred index fits) and resolution ("auto": that of the first field a
+// material reads, or kMeshVoxelsAcross along the longest axis when only meshes have materials;
+// capped at max_resolution along the longest axis, keeping voxels cubic). `meshBounds` holds the
+// world bounds of scene.meshes, in order. Throws eikon::Error when a material's field is missing
+// or empty.
+RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields,
+                                const std::vector<Bounds3>& meshBounds = {});
+
+// Voxels along the longest axis of an automatic volume of meshes alone (Sun et al.'s 128³).
+constexpr int kMeshVoxelsAcross = 128;
 
 // Trilinear samples of a scalar field at the centres of the volume's voxels, in parallel with a
 // result that does not depend on the thread count. Throws eikon::Error (at the field's origin)

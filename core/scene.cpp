@@ -19,6 +19,7 @@
 #include "core/field_registry.h"
 #include "core/json_reader.h"
 #include "core/scene_helpers.h"
+#include "core/scene_meshes.h"
 #include "core/scene_receivers.h"
 #include "core/scene_simulation.h"
 
@@ -633,17 +634,48 @@ void checkLabelledFields(const Value& materials, const Scene& scene) {
     }
 }
 
+// Appends the meshes' materials after the scene's own: names must stay unique, and all of them
+// together must fit the GPU's material slots.
+void addMeshMaterials(const Value& meshes, ParsedMeshes parsed, Scene& scene) {
+    for (std::size_t i = 0; i < parsed.meshes.size(); ++i)
+        for (const MaterialSpec& m : scene.materials)
+            if (m.name == parsed.meshes[i].name || m.name == parsed.meshes[i].name + ".n")
+                meshes.element(i).child("name").fail("mesh name \"" + parsed.meshes[i].name +
+                                                     "\" clashes with material \"" + m.name +
+                                                     "\"");
+    if (scene.materials.size() + parsed.materials.size() > kMaxMaterials)
+        meshes.fail("the materials (" + std::to_string(scene.materials.size()) +
+                    ") and the meshes' (" + std::to_string(parsed.materials.size()) +
+                    ": one for n, one for absorption/scattering/emission per mesh) exceed " +
+                    std::to_string(kMaxMaterials) + " material slots");
+    scene.materials.insert(scene.materials.end(), parsed.materials.begin(),
+                           parsed.materials.end());
+    scene.meshes = std::move(parsed.meshes);
+}
+
 Scene readScene(const Value& root, const std::string& file) {
     Object object(root, "the scene");
     Scene scene;
     scene.path = file;
     const fs::path sceneDirectory = fs::path(file).parent_path();
     if (auto volume = object.optional("volume")) scene.volume = readVolume(*volume);
-    scene.sources =
-        readSources(object.required("sources", "a non-empty array of sources"), sceneDirectory);
-    const Value materials = object.required("materials", "a non-empty array of materials");
-    scene.materials = readMaterials(materials);
-    checkLabelledFields(materials, scene);
+    // Meshes carry their own materials, so a scene of meshes alone needs neither sources nor
+    // materials.
+    const auto meshes = object.optional("meshes");
+    ParsedMeshes parsedMeshes;
+    if (meshes) parsedMeshes = readMeshes(*meshes, sceneDirectory);
+    const bool hasMeshes = !parsedMeshes.meshes.empty();
+    if (auto sources = object.optional("sources"); sources || !hasMeshes)
+        scene.sources = readSources(
+            sources ? *sources : object.required("sources", "a non-empty array of sources"),
+            sceneDirectory);
+    if (auto materials = object.optional("materials"); materials || !hasMeshes) {
+        const Value list =
+            materials ? *materials : object.required("materials", "a non-empty array of materials");
+        scene.materials = readMaterials(list);
+        checkLabelledFields(list, scene);
+    }
+    if (hasMeshes) addMeshMaterials(*meshes, std::move(parsedMeshes), scene);
     if (auto lights = object.optional("lights")) scene.lights = readLights(*lights);
     if (auto receivers = object.optional("receivers")) scene.receivers = readReceivers(*receivers);
     if (auto camera = object.optional("camera")) scene.camera = readCamera(*camera);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -88,6 +89,33 @@ struct MaterialSpec {
     // which the linear material path does not have).
     float gladstoneDale = 0.0f;
     float ambientKelvin = 288.15f;
+};
+
+// A closed triangle mesh voxelized into the render volume every frame it changes (Sun et al. 2008
+// §4.1; render/voxelize.h), carrying its own material. Placed by scale, then rotation, then
+// translation (glTF's TRS order). The parser turns its optics into ordinary materials over two
+// fields of its own (meshMaterialFieldNames): its coverage for absorption, scattering and
+// emission, and the coverage blurred by the Gaussian (σ, radius in voxels) for n, since only n
+// needs to be smooth (its gradient is the surface normal). Overlapping meshes: a later mesh in
+// the list displaces earlier ones (each coverage is multiplied by 1 − the coverage of every later
+// mesh), so the optics never add up where two objects overlap.
+enum class MeshShapeType { File, Icosphere, Box };
+
+struct MeshObjectSpec {
+    std::string name;  // unique among meshes and materials
+    MeshShapeType shape = MeshShapeType::File;
+    std::string file;         // File: OBJ, OFF, PLY or STL, resolved against the scene's folder
+    int closeHolesUpTo = 0;   // File: fill holes of up to this many edges (0: open meshes fail)
+    float radius = 0.5f;      // Icosphere, around the object's origin
+    int subdivisions = 4;     // Icosphere: 20·4^s triangles
+    glm::vec3 boxMin{-0.5f};  // Box
+    glm::vec3 boxMax{0.5f};   // Box
+    glm::vec3 scale{1.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z
+    glm::vec3 translation{0.0f};
+    float blurSigmaVoxels = 1.5f;  // Sun et al.: σ = 1.5 voxels in a 9³ window
+    int blurRadiusVoxels = 4;
+    std::string jsonPath;  // e.g. "/meshes/0"
 };
 
 enum class LightType { Point, Directional, Spot };
@@ -210,7 +238,9 @@ struct Scene {
     std::string path;  // the file it came from; empty when built in code
     VolumeSettings volume;
     std::vector<SourceSpec> sources;
+    // The scene's materials, then those the parser made for the meshes (see MeshObjectSpec).
     std::vector<MaterialSpec> materials;
+    std::vector<MeshObjectSpec> meshes;
     std::vector<LightSpec> lights;
     std::vector<ReceiverSpec> receivers;
     CameraSpec camera;
@@ -220,6 +250,16 @@ struct Scene {
     TimeSettings time;
     std::optional<SmokeSimulationSpec> simulation;  // `eikon simulate` steps it
 };
+
+// The two fields a mesh writes: its coverage (absorption, scattering, emission read it) and its
+// blurred coverage (n reads it): "<name>" and "<name>.n".
+struct MeshFieldNames {
+    std::string coverage;
+    std::string index;
+};
+MeshFieldNames meshMaterialFieldNames(const MeshObjectSpec& mesh);
+// The mesh index whose field `field` is, or −1 for fields sources write.
+int meshOfField(const Scene& scene, const std::string& field);
 
 // Reads and validates a scene file. Throws eikon::Error naming the file and JSON path.
 Scene loadScene(const std::string& path);

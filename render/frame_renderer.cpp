@@ -12,6 +12,7 @@
 #include "render/view_params.h"
 #include "render/view_pass.h"
 #include "render/volume_textures.h"
+#include "render/voxelize.h"
 
 namespace eikon {
 
@@ -30,7 +31,7 @@ bool useHardwareTrilinear(const GlContext& gl) {
 }  // namespace
 
 FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* context)
-    : scene_(scene), backend_(backend), sources_(scene_) {
+    : scene_(scene), backend_(backend), sources_(scene_), meshFields_(scene_) {
     if (backend_ == Backend::Gpu) {
         if (!context) {
             ownContext_ = createHeadlessContext();
@@ -45,6 +46,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* con
         lightVolumesGpu_ = std::make_unique<LightVolumesGpu>(hardwareTrilinear_);
         viewPass_ = std::make_unique<ViewPassGpu>(hardwareTrilinear_);
         refractionGpu_ = std::make_unique<RefractionVolumesGpu>();
+        if (!scene_.meshes.empty()) voxelizerGpu_ = std::make_unique<MeshVoxelizerGpu>();
     }
     environment_ = std::make_unique<EnvironmentMap>(backend_ == Backend::Gpu);
     timer_ = std::make_unique<GpuStageTimer>(backend_ == Backend::Gpu);
@@ -56,6 +58,7 @@ FrameRenderer::~FrameRenderer() {
     environment_.reset();
     viewPass_.reset();
     photonsGpu_.reset();
+    voxelizerGpu_.reset();
     refractionGpu_.reset();
     lightVolumesGpu_.reset();
     paramsBuffer_.reset();
@@ -152,6 +155,10 @@ int FrameRenderer::environmentLoads() const {
     return environment_->loads();
 }
 
+void FrameRenderer::setMesh(size_t index, TriangleMesh objectSpace) {
+    meshFields_.setMesh(scene_, index, std::move(objectSpace));
+}
+
 int FrameRenderer::uploads() const {
     return textures_ ? textures_->uploads() : 0;
 }
@@ -168,8 +175,13 @@ Image FrameRenderer::render(int frame) {
     environment_->update(scene_);
     timer_->end();
 
+    volume_ = chooseRenderVolume(scene_, fields_, meshFields_.worldBounds(scene_));
+    if (!scene_.meshes.empty()) {
+        timer_->begin("voxelize");
+        meshFields_.update(scene_, volume_, voxelizerGpu_.get(), dense_);
+        timer_->end();
+    }
     timer_->begin("resample");
-    volume_ = chooseRenderVolume(scene_, fields_);
     const CameraFrame camera =
         makeCameraFrame(scene_.camera, volume_.bounds, scene_.render.width, scene_.render.height);
     const Image& environment = environment_->image();
@@ -177,6 +189,10 @@ Image FrameRenderer::render(int frame) {
         makeViewSetup(scene_, volume_, camera, glm::ivec2(environment.width, environment.height));
     std::vector<const DenseGrid*> slotGrids;
     for (const std::string& name : setup.slotFields) {
+        if (meshOfField(scene_, name) >= 0) {  // written by meshFields_ above
+            slotGrids.push_back(&dense_.at(name));
+            continue;
+        }
         const Field& f = fields_.get(name);
         auto it = dense_.find(name);
         if (it == dense_.end() || it->second.version != f.version || it->second.volume != volume_) {

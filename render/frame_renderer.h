@@ -17,6 +17,7 @@
 #include "render/gpu_timer.h"
 #include "render/image.h"
 #include "render/light_volume.h"
+#include "render/mesh_fields.h"
 #include "render/photon_radiance.h"
 
 namespace eikon {
@@ -24,6 +25,7 @@ namespace eikon {
 class EnvironmentMap;
 class GlContext;
 class LightVolumesGpu;
+class MeshVoxelizerGpu;
 class PhotonRadianceGpu;
 class RefractionVolumesGpu;
 class ParamsBuffer;
@@ -40,6 +42,13 @@ public:
     ~FrameRenderer();
 
     Image render(int frame);
+
+    // The object-space triangles of scene mesh `index`: a file's (core cannot read meshes; the
+    // caller loads them through sim/mesh_io.h) or a deformer's output each frame. Meshes from
+    // shapes are generated already. Throws eikon::Error for a bad index or an unusable mesh.
+    void setMesh(size_t index, TriangleMesh objectSpace);
+    // Meshes voxelized so far: only when a mesh, its placement or the render volume changed.
+    int voxelizations() const { return meshFields_.voxelizations(); }
 
     // The scene, for changes between frames (camera, lights, materials need no reload).
     Scene& scene() { return scene_; }
@@ -84,6 +93,8 @@ private:
     GlContext* gl_ = nullptr;  // ownContext_ or the caller's
     SceneSources sources_;
     FieldRegistry fields_;
+    MeshFields meshFields_;
+    std::unique_ptr<MeshVoxelizerGpu> voxelizerGpu_;
     std::map<std::string, DenseGrid> dense_;  // by field name
     RenderVolume volume_;
     std::unique_ptr<VolumeTextures> textures_;

@@ -43,6 +43,8 @@ public:
 
     // Writes the mesh's coverage into `target`, an R32F 3D texture of volume.resolution.
     void voxelize(const TriangleMesh& mesh, const RenderVolume& volume, unsigned target);
+    // The same, read back into host memory (x fastest), through a texture the voxelizer keeps.
+    std::vector<float> voxelizeToHost(const TriangleMesh& mesh, const RenderVolume& volume);
     // Blurs R32F `texture` in place (through an internal scratch texture of the same size).
     void blur(unsigned texture, glm::ivec3 res, const IndexBlurSettings& settings);
 
@@ -53,6 +55,8 @@ private:
     unsigned positions_ = 0, triangles_ = 0, bits_ = 0;
     unsigned scratch_ = 0;
     glm::ivec3 scratchRes_{0};
+    unsigned hostTarget_ = 0;
+    glm::ivec3 hostTargetRes_{0};
 };
 
 }  // namespace eikon

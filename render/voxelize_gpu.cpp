@@ -38,6 +38,24 @@ MeshVoxelizerGpu::~MeshVoxelizerGpu() {
     for (GLuint b : buffers)
         if (b) glDeleteBuffers(1, &b);
     if (scratch_) glDeleteTextures(1, &scratch_);
+    if (hostTarget_) glDeleteTextures(1, &hostTarget_);
+}
+
+std::vector<float> MeshVoxelizerGpu::voxelizeToHost(const TriangleMesh& mesh,
+                                                    const RenderVolume& volume) {
+    const glm::ivec3 res = volume.resolution;
+    if (!hostTarget_ || hostTargetRes_ != res) {
+        if (hostTarget_) glDeleteTextures(1, &hostTarget_);
+        glGenTextures(1, &hostTarget_);
+        glBindTexture(GL_TEXTURE_3D, hostTarget_);
+        glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, res.x, res.y, res.z);
+        hostTargetRes_ = res;
+    }
+    voxelize(mesh, volume, hostTarget_);
+    std::vector<float> out(volume.voxelCount());
+    glBindTexture(GL_TEXTURE_3D, hostTarget_);
+    glGetTexImage(GL_TEXTURE_3D, 0, GL_RED, GL_FLOAT, out.data());
+    return out;
 }
 
 void MeshVoxelizerGpu::voxelize(const TriangleMesh& mesh, const RenderVolume& volume,

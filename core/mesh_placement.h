@@ -1,0 +1,16 @@
+#pragma once
+// A scene mesh's triangles in object space (generated shapes) and in the world (placed by its
+// scale, rotation and translation).
+#include "core/scene.h"
+#include "core/triangle_mesh.h"
+
+namespace eikon {
+
+// The object-space mesh of a generated shape (icosphere, box); empty for a mesh read from a file.
+TriangleMesh meshShape(const MeshObjectSpec& spec);
+
+// Every position p becomes translation + rotation · (scale ⊙ p). A mirroring scale (never from
+// the parser, which wants scales > 0) would flip the winding.
+TriangleMesh placeMesh(const TriangleMesh& local, const MeshObjectSpec& spec);
+
+}  // namespace eikon

@@ -1,0 +1,175 @@
+// The "meshes" array of a scene, read as strictly as the rest (see scene.cpp): every error names
+// "<file>:/meshes/<i>/...". Keep in step with docs/scene-format.md#meshes.
+#include "core/scene_meshes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "core/scene_helpers.h"
+
+namespace eikon {
+namespace {
+
+using json::Object;
+using json::Range;
+using json::Value;
+
+constexpr int kMaxSubdivisions = 7;  // 327,680 triangles
+constexpr int kMaxBlurRadius = 16;
+
+bool isNameCharacter(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+}
+
+void readShape(const Value& value, MeshObjectSpec& mesh) {
+    Object object(value, "a mesh shape");
+    const std::string type =
+        object.required("type", "\"icosphere\" or \"box\"").choice({"icosphere", "box"});
+    if (type == "icosphere") {
+        object.setKind("an icosphere shape");
+        mesh.shape = MeshShapeType::Icosphere;
+        mesh.radius = object.required("radius", "a number > 0").floatNumber(Range::greaterThan(0.0));
+        if (auto s = object.optional("subdivisions"))
+            mesh.subdivisions = int(s->integer(0, kMaxSubdivisions));
+    } else {
+        object.setKind("a box shape");
+        mesh.shape = MeshShapeType::Box;
+        mesh.boxMin = object.required("min", "an array of 3 numbers [x, y, z]").vec3();
+        const Value max = object.required("max", "an array of 3 numbers [x, y, z]");
+        mesh.boxMax = max.vec3();
+        if (!(mesh.boxMin.x < mesh.boxMax.x && mesh.boxMin.y < mesh.boxMax.y &&
+              mesh.boxMin.z < mesh.boxMax.z))
+            max.fail("expected max > min along every axis");
+    }
+    object.finish();
+}
+
+// A unit quaternion [x, y, z, w] (glTF's order), or Euler angles in degrees applied about x,
+// then y, then z (fixed axes).
+void readRotation(Object& object, MeshObjectSpec& mesh) {
+    const auto quaternion = object.optional("rotation");
+    const auto euler = object.optional("rotate_deg");
+    if (quaternion && euler) euler->fail("give either \"rotation\" or \"rotate_deg\", not both");
+    if (quaternion) {
+        const std::vector<Value> q = quaternion->elements("an array of 4 numbers [x, y, z, w]", 4);
+        if (q.size() != 4) quaternion->failExpected("an array of 4 numbers [x, y, z, w]");
+        const glm::quat r(q[3].floatNumber(), q[0].floatNumber(), q[1].floatNumber(),
+                          q[2].floatNumber());
+        const float length = glm::length(r);
+        if (!(std::abs(length - 1.0f) < 1e-3f))
+            quaternion->fail("expected a unit quaternion (length within 1e-3 of 1), got length " +
+                             std::to_string(length));
+        mesh.rotation = glm::normalize(r);
+    } else if (euler) {
+        const glm::vec3 deg = euler->vec3();
+        mesh.rotation = glm::angleAxis(glm::radians(deg.z), glm::vec3(0, 0, 1)) *
+                        glm::angleAxis(glm::radians(deg.y), glm::vec3(0, 1, 0)) *
+                        glm::angleAxis(glm::radians(deg.x), glm::vec3(1, 0, 0));
+    }
+}
+
+void readBlur(const Value& value, MeshObjectSpec& mesh) {
+    Object object(value, "the index blur");
+    if (auto s = object.optional("sigma_voxels"))
+        mesh.blurSigmaVoxels = s->floatNumber(Range::openClosed(0.0, 8.0));
+    if (auto r = object.optional("radius_voxels"))
+        mesh.blurRadiusVoxels = int(r->integer(0, kMaxBlurRadius));
+    object.finish();
+}
+
+MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDirectory,
+                        MaterialSpec& optics) {
+    Object object(value, "a mesh");
+    MeshObjectSpec mesh;
+    mesh.jsonPath = value.pointer();
+    const Value name = object.required("name", "a non-empty string of letters, digits, '_', '-'");
+    mesh.name = name.nonEmptyString();
+    if (!std::all_of(mesh.name.begin(), mesh.name.end(), isNameCharacter))
+        name.failExpected("a non-empty string of letters, digits, '_', '-'");
+    const auto file = object.optional("file");
+    const auto shape = object.optional("shape");
+    if (file && shape) shape->fail("give either \"file\" or \"shape\", not both");
+    if (!file && !shape) object.failAt("file", "a mesh needs \"file\" or \"shape\"");
+    if (file) {
+        mesh.shape = MeshShapeType::File;
+        mesh.file = scene_detail::resolveAgainst(sceneDirectory, file->nonEmptyString());
+        if (auto holes = object.optional("close_holes"))
+            mesh.closeHolesUpTo = int(holes->integer(0, 1000000));
+    } else {
+        readShape(*shape, mesh);
+        if (auto holes = object.optional("close_holes"))
+            holes->fail("\"close_holes\" applies to meshes read from a file");
+    }
+    if (auto t = object.optional("translate")) mesh.translation = t->vec3();
+    readRotation(object, mesh);
+    if (auto s = object.optional("scale")) {
+        mesh.scale = s->isNumber() ? glm::vec3(s->floatNumber(Range::greaterThan(0.0)))
+                                   : s->vec3(Range::greaterThan(0.0));
+    }
+    if (auto blur = object.optional("blur")) readBlur(*blur, mesh);
+
+    optics.name = mesh.name;
+    if (auto ior = object.optional("ior")) optics.ior = ior->floatNumber(Range::atLeast(1.0));
+    if (auto a = object.optional("absorption")) optics.absorption = a->vec3(Range::atLeast(0.0));
+    if (auto s = object.optional("scattering")) optics.scattering = s->vec3(Range::atLeast(0.0));
+    if (auto g = object.optional("g")) optics.g = g->floatNumber(Range::open(-1.0, 1.0));
+    if (auto e = object.optional("emission")) optics.emission = e->vec3(Range::atLeast(0.0));
+    object.finish();
+    return mesh;
+}
+
+}  // namespace
+
+ParsedMeshes readMeshes(const Value& value, const std::filesystem::path& sceneDirectory) {
+    ParsedMeshes out;
+    const std::vector<Value> elements = value.elements("an array of meshes", kMaxMeshes);
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        MaterialSpec optics;
+        MeshObjectSpec mesh = readMesh(elements[i], sceneDirectory, optics);
+        for (std::size_t j = 0; j < out.meshes.size(); ++j)
+            if (out.meshes[j].name == mesh.name)
+                elements[i].child("name").fail("duplicate mesh name \"" + mesh.name +
+                                               "\" (already used by " + elements[j].pointer() +
+                                               ")");
+        const MeshFieldNames fields = meshMaterialFieldNames(mesh);
+        const bool volumetric = optics.absorption != glm::vec3(0.0f) ||
+                                optics.scattering != glm::vec3(0.0f) ||
+                                optics.emission != glm::vec3(0.0f);
+        if (!volumetric && optics.ior == 1.0f)
+            elements[i].fail("a mesh needs optics: \"ior\" > 1, \"absorption\", \"scattering\" or "
+                             "\"emission\"");
+        if (volumetric) {
+            MaterialSpec coverage = optics;
+            coverage.field = fields.coverage;
+            coverage.ior = 1.0f;
+            out.materials.push_back(coverage);
+        }
+        if (optics.ior != 1.0f) {
+            MaterialSpec index;
+            index.name = mesh.name + ".n";
+            index.field = fields.index;
+            index.ior = optics.ior;
+            out.materials.push_back(index);
+        }
+        out.meshes.push_back(std::move(mesh));
+    }
+    return out;
+}
+
+MeshFieldNames meshMaterialFieldNames(const MeshObjectSpec& mesh) {
+    // ':' cannot appear in the field names sources write, so these never clash with them.
+    return {"mesh:" + mesh.name, "mesh:" + mesh.name + ":n"};
+}
+
+int meshOfField(const Scene& scene, const std::string& field) {
+    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+        const MeshFieldNames names = meshMaterialFieldNames(scene.meshes[m]);
+        if (field == names.coverage || field == names.index) return int(m);
+    }
+    return -1;
+}
+
+}  // namespace eikon

@@ -1,0 +1,107 @@
+// The scene's "meshes" array (core/scene_meshes.h): what it makes of a mesh, and every error it
+// promises, each at its JSON pointer.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "core/mesh_placement.h"
+#include "core/scene.h"
+
+using namespace eikon;
+
+namespace {
+
+Scene parseMeshes(const std::string& meshes, const std::string& extra = "") {
+    return parseScene(R"({"meshes": )" + meshes + extra + "}", "m.json");
+}
+
+}  // namespace
+
+TEST_CASE("a mesh carries its optics as materials over its own two fields", "[scene][meshes]") {
+    const Scene scene = parseMeshes(R"([{"name": "glass", "file": "glass.obj", "ior": 1.5,
+        "absorption": [0.1, 0.2, 0.3], "g": 0.3, "translate": [1, 2, 3], "scale": 2,
+        "rotate_deg": [0, 90, 0], "close_holes": 12, "blur": {"sigma_voxels": 1, "radius_voxels": 3}}])");
+    REQUIRE(scene.meshes.size() == 1);
+    const MeshObjectSpec& m = scene.meshes[0];
+    CHECK(m.file == "glass.obj");
+    CHECK(m.closeHolesUpTo == 12);
+    CHECK(m.scale == glm::vec3(2.0f));
+    CHECK(m.blurRadiusVoxels == 3);
+    CHECK(scene.sources.empty());
+    REQUIRE(scene.materials.size() == 2);
+    CHECK(scene.materials[0].name == "glass");
+    CHECK(scene.materials[0].field == "mesh:glass");
+    CHECK(scene.materials[0].ior == 1.0f);
+    CHECK(scene.materials[0].g == 0.3f);
+    CHECK(scene.materials[1].name == "glass.n");
+    CHECK(scene.materials[1].field == "mesh:glass:n");
+    CHECK(scene.materials[1].ior == 1.5f);
+    CHECK(meshOfField(scene, "mesh:glass:n") == 0);
+    CHECK(meshOfField(scene, "density") == -1);
+    // Scale, then rotate 90° about y (x → −z), then translate.
+    TriangleMesh point;
+    point.positions = {glm::vec3(1.0f, 0.0f, 0.0f)};
+    const glm::vec3 p = placeMesh(point, m).positions[0];
+    CHECK(glm::length(p - glm::vec3(1.0f, 2.0f, 1.0f)) < 1e-5f);
+}
+
+TEST_CASE("shapes make closed meshes; a quaternion rotation is read in glTF order",
+          "[scene][meshes]") {
+    const Scene scene = parseMeshes(R"([
+        {"name": "a", "shape": {"type": "icosphere", "radius": 0.25, "subdivisions": 2}, "ior": 2.4},
+        {"name": "b", "shape": {"type": "box", "min": [0, 0, 0], "max": [1, 2, 3]},
+         "rotation": [0, 0, 0.7071068, 0.7071068], "scattering": [1, 1, 1]}])");
+    CHECK(meshShape(scene.meshes[0]).triangles.size() == 320);
+    CHECK(signedVolume(meshShape(scene.meshes[1])) == Approx(6.0));
+    // 90° about z: x → y.
+    TriangleMesh point;
+    point.positions = {glm::vec3(1.0f, 0.0f, 0.0f)};
+    CHECK(glm::length(placeMesh(point, scene.meshes[1]).positions[0] - glm::vec3(0, 1, 0)) < 1e-5f);
+    CHECK(scene.materials.size() == 2);  // a.n, b
+}
+
+TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]") {
+    auto fails = [](const std::string& meshes, const std::string& where, const std::string& what,
+                    const std::string& extra = "") {
+        INFO(meshes);
+        CHECK_THROWS_WITH(parseMeshes(meshes, extra),
+                          Catch::Contains("m.json:" + where) && Catch::Contains(what));
+    };
+    fails(R"([{"name": "x", "file": "a.obj", "shape": {"type": "box", "min": [0,0,0], "max": [1,1,1]}, "ior": 1.5}])",
+          "/meshes/0/shape", "either \"file\" or \"shape\"");
+    fails(R"([{"name": "x", "ior": 1.5}])", "/meshes/0/file", "needs \"file\" or \"shape\"");
+    fails(R"([{"name": "x", "file": "a.obj"}])", "/meshes/0", "a mesh needs optics");
+    fails(R"([{"name": "x", "file": "a.obj", "ior": 0.9}])", "/meshes/0/ior", ">= 1");
+    fails(R"([{"name": "x", "file": "a.obj", "ior": 1.5}, {"name": "x", "file": "b.obj", "ior": 1.5}])",
+          "/meshes/1/name", "duplicate mesh name");
+    fails(R"([{"name": "a b", "file": "a.obj", "ior": 1.5}])", "/meshes/0/name", "letters");
+    fails(R"([{"name": "x", "shape": {"type": "box", "min": [0,0,0], "max": [1,0,1]}, "ior": 1.5}])",
+          "/meshes/0/shape/max", "max > min");
+    fails(R"([{"name": "x", "shape": {"type": "cone"}, "ior": 1.5}])", "/meshes/0/shape/type",
+          "icosphere");
+    fails(R"([{"name": "x", "shape": {"type": "icosphere", "radius": 1}, "close_holes": 3, "ior": 1.5}])",
+          "/meshes/0/close_holes", "from a file");
+    fails(R"([{"name": "x", "file": "a.obj", "rotation": [0, 0, 0.5, 0.5], "ior": 1.5}])",
+          "/meshes/0/rotation", "unit quaternion");
+    fails(R"([{"name": "x", "file": "a.obj", "ior": 1.5, "scale": [1, 0, 1]}])", "/meshes/0/scale/1",
+          "> 0");
+    fails(R"([{"name": "x", "file": "a.obj", "ior": 1.5, "blur": {"radius": 2}}])",
+          "/meshes/0/blur/radius", "unknown key");
+    fails(R"([{"name": "x", "file": "a.obj", "ior": 1.5, "transalte": [0, 0, 0]}])",
+          "/meshes/0/transalte", "translate");
+    // Two meshes with colour and index take four slots; one more material is one too many.
+    fails(R"([{"name": "a", "file": "a.obj", "ior": 1.5, "absorption": [1,1,1]},
+              {"name": "b", "file": "b.obj", "ior": 1.5, "absorption": [1,1,1]}])",
+          "/meshes", "exceed 4 material slots",
+          R"(, "sources": [{"type": "sphere", "field": "density", "radius": 1}],
+              "materials": [{"name": "smoke", "field": "density", "scattering": [1,1,1]}])");
+    fails(R"([{"name": "smoke", "file": "a.obj", "ior": 1.5}])", "/meshes/0/name",
+          "clashes with material",
+          R"(, "sources": [{"type": "sphere", "field": "density", "radius": 1}],
+              "materials": [{"name": "smoke", "field": "density", "scattering": [1,1,1]}])");
+    // Without meshes, sources and materials stay required.
+    CHECK_THROWS_WITH(parseScene("{}", "m.json"), Catch::Contains("missing required key 'sources'"));
+}
