@@ -10,6 +10,7 @@
 #include "apps/backend_choice.h"
 #include "apps/commands.h"
 #include "apps/frame_files.h"
+#include "apps/scene_driver.h"
 #include "apps/scene_input.h"
 #include "core/error.h"
 #include "core/scene.h"
@@ -88,11 +89,13 @@ int runRender(const RenderOptions& o) {
 
     BackendChoice choice = chooseBackend(o.backend);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());
+    const SceneDriver driver(scene);
     std::printf("%s\n", choice.description.c_str());
     const bool softwareGl =
         renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());
     int64_t photonSteps = 0;  // before this frame
     for (int frame = scene.time.frameStart; frame <= scene.time.frameEnd; ++frame) {
+        driver.prepareFrame(renderer, frame);
         const Image image = renderer.render(frame);
         const auto t0 = std::chrono::steady_clock::now();
         if (scene.output.png) {

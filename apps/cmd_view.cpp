@@ -11,6 +11,7 @@
 
 #include "apps/commands.h"
 #include "apps/orbit_camera.h"
+#include "apps/scene_driver.h"
 #include "apps/scene_input.h"
 #include "core/error.h"
 #include "render/display_pass.h"
@@ -64,6 +65,7 @@ int runView(const ViewOptions& o) {
     const bool gpu =
         o.backend == "gpu" || (o.backend == "auto" && !isSoftwareRenderer(window.rendererName()));
     FrameRenderer renderer(scene, gpu ? Backend::Gpu : Backend::Cpu, &window);
+    const SceneDriver driver(scene);
     std::printf("%s: %s\n", gpu ? "GPU" : "CPU twin (display on OpenGL)",
                 window.rendererName().c_str());
     DisplayPass display;
@@ -115,7 +117,8 @@ int runView(const ViewOptions& o) {
         }
 
         if (dirty) {
-            if (orbit) renderer.scene().camera = orbit->spec();
+            driver.prepareFrame(renderer, frame);
+            if (orbit) renderer.scene().camera = orbit->spec();  // the user's view wins
             image = renderer.render(frame);
             if (!orbit)
                 orbit.emplace(scene.camera, renderer.volume().bounds, scene.render.width,

@@ -19,6 +19,7 @@
 #include "core/field_registry.h"
 #include "core/json_reader.h"
 #include "core/scene_helpers.h"
+#include "core/scene_animation.h"
 #include "core/scene_meshes.h"
 #include "core/scene_receivers.h"
 #include "core/scene_simulation.h"
@@ -691,6 +692,9 @@ Scene readScene(const Value& root, const std::string& file) {
         // its simulation share a prefix.
         if (scene.output.nameSet) scene.simulation->cacheName = scene.output.name;
     }
+    // Last: tracks point into everything above.
+    if (auto animation = object.optional("animation"))
+        scene.animation = readAnimation(*animation, scene);
     object.finish();
     return scene;
 }

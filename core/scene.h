@@ -234,6 +234,22 @@ struct TimeSettings {
     int frameEnd = 0;  // inclusive
 };
 
+// A keyframe track (docs/scene-format.md#animation): one animatable value of the scene, its keys
+// and how to interpolate between them. Targets are JSON pointers into the scene as written, e.g.
+// "/lights/0/position", "/meshes/1/rotation", "/materials/2/absorption", "/camera/look_at".
+enum class Interpolation { Step, Linear, CatmullRom, CubicSpline };
+
+struct AnimationTrack {
+    std::string target;  // the JSON pointer, as written
+    Interpolation interpolation = Interpolation::Linear;
+    std::vector<double> times;  // seconds, strictly increasing
+    // `width` numbers per key (1 scalar, 3 vec3, 4 quaternion [x, y, z, w]); CubicSpline keys
+    // hold glTF's triple (in-tangent, value, out-tangent), 3·width numbers.
+    int width = 1;
+    std::vector<float> values;
+    std::string jsonPath;  // e.g. "/animation/0"
+};
+
 struct Scene {
     std::string path;  // the file it came from; empty when built in code
     VolumeSettings volume;
@@ -249,6 +265,7 @@ struct Scene {
     OutputSettings output;
     TimeSettings time;
     std::optional<SmokeSimulationSpec> simulation;  // `eikon simulate` steps it
+    std::vector<AnimationTrack> animation;          // sim/animation.h evaluates them
 };
 
 // The two fields a mesh writes: its coverage (absorption, scattering, emission read it) and its
