@@ -89,7 +89,7 @@ int runRender(const RenderOptions& o) {
 
     BackendChoice choice = chooseBackend(o.backend);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());
-    const SceneDriver driver(scene);
+    SceneDriver driver(scene);
     std::printf("%s\n", choice.description.c_str());
     const bool softwareGl =
         renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());

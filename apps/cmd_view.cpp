@@ -65,7 +65,7 @@ int runView(const ViewOptions& o) {
     const bool gpu =
         o.backend == "gpu" || (o.backend == "auto" && !isSoftwareRenderer(window.rendererName()));
     FrameRenderer renderer(scene, gpu ? Backend::Gpu : Backend::Cpu, &window);
-    const SceneDriver driver(scene);
+    SceneDriver driver(scene);
     std::printf("%s: %s\n", gpu ? "GPU" : "CPU twin (display on OpenGL)",
                 window.rendererName().c_str());
     DisplayPass display;

@@ -1,10 +1,15 @@
 #pragma once
 // What the commands that render a scene do to the renderer before each frame, so that `eikon
 // render` and `eikon view` show the same state at the same frame: the scene's keyframe tracks
-// evaluated at the frame's time on the one clock (sim/clock.h, the scene's fps).
+// evaluated at the frame's time on the one clock (sim/clock.h, the scene's fps), and every water
+// surface stepped to that frame (from rest at frame 0, so a frame is the same however reached).
+#include <memory>
+#include <vector>
+
 #include "render/frame_renderer.h"
 #include "sim/animation.h"
 #include "sim/clock.h"
+#include "sim/water_surface.h"
 
 namespace eikon::app {
 
@@ -13,11 +18,17 @@ public:
     explicit SceneDriver(const Scene& scene);
 
     // Sets the renderer's scene to frame `frame`'s state.
-    void prepareFrame(FrameRenderer& renderer, int frame) const;
+    void prepareFrame(FrameRenderer& renderer, int frame);
 
 private:
     sim::SceneAnimation animation_;
     SimulationClock clock_;
+    struct Water {
+        size_t mesh;
+        std::unique_ptr<sim::WaterSurface> surface;
+        int frameSet = -1;  // the frame whose surface the renderer has
+    };
+    std::vector<Water> waters_;
 };
 
 }  // namespace eikon::app

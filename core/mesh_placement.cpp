@@ -1,5 +1,7 @@
 #include "core/mesh_placement.h"
 
+#include <cmath>
+
 #include "core/mesh_primitives.h"
 
 namespace eikon {
@@ -10,6 +12,15 @@ TriangleMesh meshShape(const MeshObjectSpec& spec) {
             return icosphere(glm::vec3(0.0f), spec.radius, spec.subdivisions);
         case MeshShapeType::Box:
             return boxMesh(spec.boxMin, spec.boxMax);
+        case MeshShapeType::Water: {
+            // The pool's room: its rest body with headroom for every droplet's dent above and
+            // below the rest surface, so that the render volume does not follow the waves.
+            float headroom = 0.0f;
+            for (const WaterDropletSpec& d : spec.water.droplets) headroom += std::abs(d.depth);
+            const glm::vec2 half = 0.5f * spec.water.size;
+            return boxMesh({-half.x, 0.0f, -half.y},
+                           {half.x, spec.water.depth + headroom, half.y});
+        }
         case MeshShapeType::File:
             break;
     }

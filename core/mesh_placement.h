@@ -7,6 +7,8 @@
 namespace eikon {
 
 // The object-space mesh of a generated shape (icosphere, box); empty for a mesh read from a file.
+// Water: the box its waves stay in (the rest body with headroom for the droplets), which the
+// render volume is framed on; the surface itself comes from sim/water_surface.h each frame.
 TriangleMesh meshShape(const MeshObjectSpec& spec);
 
 // Every position p becomes translation + rotation · (scale ⊙ p). A mirroring scale (never from

@@ -99,7 +99,25 @@ struct MaterialSpec {
 // needs to be smooth (its gradient is the surface normal). Overlapping meshes: a later mesh in
 // the list displaces earlier ones (each coverage is multiplied by 1 − the coverage of every later
 // mesh), so the optics never add up where two objects overlap.
-enum class MeshShapeType { File, Icosphere, Box };
+enum class MeshShapeType { File, Icosphere, Box, Water };
+
+// A pool of water whose surface follows the damped wave equation (sim/water_surface.h), stepped
+// on the scene's clock; droplets dent it at given times.
+struct WaterDropletSpec {
+    double time = 0.0;
+    glm::vec2 position{0.0f};  // (x, z) in the pool's object space
+    float radius = 0.05f;
+    float depth = 0.02f;
+};
+
+struct WaterSpec {
+    glm::vec2 size{2.0f, 2.0f};  // x and z extent, centred on the object's origin
+    glm::ivec2 cells{64, 64};
+    float depth = 0.3f;  // rest surface above the bottom (y = 0)
+    float waveSpeed = 1.0f;
+    float damping = 0.0f;
+    std::vector<WaterDropletSpec> droplets;
+};
 
 struct MeshObjectSpec {
     std::string name;  // unique among meshes and materials
@@ -110,6 +128,7 @@ struct MeshObjectSpec {
     int subdivisions = 4;     // Icosphere: 20·4^s triangles
     glm::vec3 boxMin{-0.5f};  // Box
     glm::vec3 boxMax{0.5f};   // Box
+    WaterSpec water;          // Water
     glm::vec3 scale{1.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z
     glm::vec3 translation{0.0f};

@@ -24,11 +24,50 @@ bool isNameCharacter(char c) {
            c == '-';
 }
 
+WaterDropletSpec readDroplet(const Value& value, const WaterSpec& water) {
+    Object object(value, "a droplet");
+    WaterDropletSpec d;
+    d.time = object.required("time", "seconds >= 0").number(Range::atLeast(0.0));
+    const Value position = object.required("position", "[x, z] inside the pool");
+    const std::vector<Value> xz = position.elements("an array of 2 numbers [x, z]", 2);
+    if (xz.size() != 2) position.failExpected("an array of 2 numbers [x, z]");
+    d.position = {xz[0].floatNumber(Range::closed(-0.5 * water.size.x, 0.5 * water.size.x)),
+                  xz[1].floatNumber(Range::closed(-0.5 * water.size.y, 0.5 * water.size.y))};
+    if (auto r = object.optional("radius")) d.radius = r->floatNumber(Range::greaterThan(0.0));
+    if (auto a = object.optional("depth")) d.depth = a->floatNumber();
+    object.finish();
+    return d;
+}
+
+void readWater(Object& object, WaterSpec& water) {
+    const Value size = object.required("size", "an array of 2 numbers > 0 [x, z]");
+    const std::vector<Value> sxz = size.elements("an array of 2 numbers > 0 [x, z]", 2);
+    if (sxz.size() != 2) size.failExpected("an array of 2 numbers > 0 [x, z]");
+    water.size = {sxz[0].floatNumber(Range::greaterThan(0.0)),
+                  sxz[1].floatNumber(Range::greaterThan(0.0))};
+    if (auto cells = object.optional("cells")) {
+        const std::vector<Value> n = cells->elements("an array of 2 integers [nx, nz]", 2);
+        if (n.size() != 2) cells->failExpected("an array of 2 integers [nx, nz]");
+        water.cells = {int(n[0].integer(2, 4096)), int(n[1].integer(2, 4096))};
+    }
+    water.depth = object.required("depth", "a number > 0").floatNumber(Range::greaterThan(0.0));
+    if (auto c = object.optional("wave_speed"))
+        water.waveSpeed = c->floatNumber(Range::greaterThan(0.0));
+    if (auto g = object.optional("damping")) water.damping = g->floatNumber(Range::atLeast(0.0));
+    if (auto drops = object.optional("droplets"))
+        for (const Value& d : drops->elements("an array of droplets"))
+            water.droplets.push_back(readDroplet(d, water));
+}
+
 void readShape(const Value& value, MeshObjectSpec& mesh) {
     Object object(value, "a mesh shape");
-    const std::string type =
-        object.required("type", "\"icosphere\" or \"box\"").choice({"icosphere", "box"});
-    if (type == "icosphere") {
+    const std::string type = object.required("type", "\"icosphere\", \"box\" or \"water\"")
+                                 .choice({"icosphere", "box", "water"});
+    if (type == "water") {
+        object.setKind("a water shape");
+        mesh.shape = MeshShapeType::Water;
+        readWater(object, mesh.water);
+    } else if (type == "icosphere") {
         object.setKind("an icosphere shape");
         mesh.shape = MeshShapeType::Icosphere;
         mesh.radius = object.required("radius", "a number > 0").floatNumber(Range::greaterThan(0.0));

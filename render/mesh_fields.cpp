@@ -28,7 +28,8 @@ std::vector<unsigned char> placementKey(std::uint64_t version, const MeshObjectS
 
 MeshFields::MeshFields(const Scene& scene) : meshes_(scene.meshes.size()) {
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
-        if (scene.meshes[i].shape == MeshShapeType::File) continue;
+        const MeshShapeType shape = scene.meshes[i].shape;
+        if (shape == MeshShapeType::File || shape == MeshShapeType::Water) continue;
         meshes_[i].local = meshShape(scene.meshes[i]);
         meshes_[i].loaded = true;
     }
@@ -51,6 +52,11 @@ void MeshFields::setMesh(const Scene& scene, size_t index, TriangleMesh objectSp
 const TriangleMesh& MeshFields::placed(const Scene& scene, size_t index) {
     Mesh& m = meshes_[index];
     const MeshObjectSpec& spec = scene.meshes[index];
+    if (!m.loaded && spec.shape == MeshShapeType::Water)
+        throw Error(scene.path + ":" + spec.jsonPath + "/shape",
+                    "mesh '" + spec.name +
+                        "' (water) was never stepped: the program rendering the scene must "
+                        "step its surface (sim/water_surface.h) and set the mesh");
     if (!m.loaded)
         throw Error(scene.path + ":" + spec.jsonPath + "/file",
                     "mesh '" + spec.name + "' (" + spec.file +
@@ -70,7 +76,13 @@ std::vector<Bounds3> MeshFields::worldBounds(const Scene& scene) {
                                                  ", now " + std::to_string(scene.meshes.size()) +
                                                  ")");
     std::vector<Bounds3> out;
-    for (size_t i = 0; i < meshes_.size(); ++i) out.push_back(boundsOf(placed(scene, i)));
+    for (size_t i = 0; i < meshes_.size(); ++i) {
+        const MeshObjectSpec& spec = scene.meshes[i];
+        // Water moves every frame; the volume is framed on the room its waves stay in.
+        out.push_back(spec.shape == MeshShapeType::Water
+                          ? boundsOf(placeMesh(meshShape(spec), spec))
+                          : boundsOf(placed(scene, i)));
+    }
     return out;
 }
 

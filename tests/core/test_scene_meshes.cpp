@@ -102,6 +102,11 @@ TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]
           "clashes with material",
           R"(, "sources": [{"type": "sphere", "field": "density", "radius": 1}],
               "materials": [{"name": "smoke", "field": "density", "scattering": [1,1,1]}])");
+    fails(R"([{"name": "w", "shape": {"type": "water", "size": [2, 2], "depth": 0.3,
+              "droplets": [{"time": 0, "position": [1.5, 0]}]}, "ior": 1.33}])",
+          "/meshes/0/shape/droplets/0/position/0", "in [-1, 1]");
+    fails(R"([{"name": "w", "shape": {"type": "water", "size": [2, 2]}, "ior": 1.33}])",
+          "/meshes/0/shape/depth", "missing required key");
     // Without meshes, sources and materials stay required.
     CHECK_THROWS_WITH(parseScene("{}", "m.json"), Catch::Contains("missing required key 'sources'"));
 }

@@ -230,3 +230,29 @@ TEST_CASE("eikon render plays a scene's keyframes on the scene's clock", "[cli][
     REQUIRE(again.exitCode == 0);
     CHECK(readFile(dir + "/b/moving_0001.png") == second);
 }
+
+TEST_CASE("eikon render steps a scene's water surface frame by frame", "[cli][water]") {
+    const std::string dir = scratchDir("cli_render_water");
+    const std::string scene = dir + "/pool.json";
+    writeFile(scene, R"({
+  "volume": {"bounds": {"min": [-1.1, -0.1, -1.1], "max": [1.1, 0.5, 1.1]}, "resolution": [20, 8, 20]},
+  "meshes": [{"name": "water", "shape": {"type": "water", "size": [2, 2], "cells": [24, 24],
+              "depth": 0.3, "droplets": [{"time": 0, "position": [0, 0], "radius": 0.2, "depth": 0.1}]},
+              "ior": 1.33, "absorption": [0.5, 0.2, 0.1]}],
+  "lights": [{"type": "directional", "direction": [0, -1, 0]}],
+  "camera": {"position": [0, 2, 2], "look_at": [0, 0, 0]},
+  "environment": {"type": "gradient", "zenith": [0.2, 0.3, 0.6], "horizon": [0.9, 0.9, 0.8],
+                  "ground": [0.5, 0.3, 0.1]},
+  "render": {"width": 24, "height": 16, "photons": {"mode": "off"}},
+  "output": {"name": "pool", "png": true},
+  "time": {"fps": 24, "frame_start": 0, "frame_end": 2}
+})");
+    const RunResult r = runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/a"), dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK(readFile(dir + "/a/pool_0000.png") != readFile(dir + "/a/pool_0002.png"));
+    const RunResult alone =
+        runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/b") + " --frames 2-2", dir);
+    REQUIRE(alone.exitCode == 0);
+    CHECK(readFile(dir + "/b/pool_0002.png") == readFile(dir + "/a/pool_0002.png"));
+}

@@ -137,3 +137,20 @@ TEST_CASE("a mesh scene renders the same on the GPU as on the CPU twin", "[meshe
     CHECK(worst < 1e-4 * brightest);
     CHECK(gpu.voxelizations() == 1);
 }
+
+TEST_CASE("a water mesh frames the volume on its room and waits to be stepped", "[meshes]") {
+    const Scene scene = parseScene(R"({
+        "meshes": [{"name": "pool", "shape": {"type": "water", "size": [2, 1], "depth": 0.3,
+                    "droplets": [{"time": 0.5, "position": [0.2, 0.1], "depth": 0.05},
+                                 {"time": 0.7, "position": [-0.2, 0.1], "depth": -0.02}]},
+                    "ior": 1.33}],
+        "volume": {"resolution": 16}
+    })", "/s/pool.json");
+    MeshFields meshes(scene);
+    const std::vector<Bounds3> bounds = meshes.worldBounds(scene);
+    CHECK(bounds[0].min == glm::vec3(-1.0f, 0.0f, -0.5f));
+    CHECK(bounds[0].max.y == Approx(0.37f));  // depth + the droplets' 0.05 + 0.02 of headroom
+    FrameRenderer renderer(scene, Backend::Cpu);
+    CHECK_THROWS_WITH(renderer.render(0), Catch::Contains("/s/pool.json:/meshes/0/shape") &&
+                                              Catch::Contains("never stepped"));
+}
