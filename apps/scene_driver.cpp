@@ -1,25 +1,42 @@
 #include "apps/scene_driver.h"
 
+#include "core/mesh_placement.h"
+#include "sim/jelly_from_scene.h"
 #include "sim/water_from_scene.h"
 
 namespace eikon::app {
 
 SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.time.fps, 1.0) {
-    for (size_t m = 0; m < scene.meshes.size(); ++m)
-        if (scene.meshes[m].shape == MeshShapeType::Water)
-            waters_.push_back({m, std::make_unique<sim::WaterSurface>(sim::waterSettingsFor(
-                                      scene.meshes[m].water, scene.time.fps))});
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const MeshObjectSpec& spec = scene.meshes[m];
+        if (spec.shape == MeshShapeType::Water) {
+            Simulated s{m, std::make_unique<sim::WaterSurface>(
+                               sim::waterSettingsFor(spec.water, scene.time.fps)),
+                        nullptr};
+            simulated_.push_back(std::move(s));
+        } else if (spec.jelly) {
+            // The jelly lives in the world, starting where the mesh is placed.
+            const TriangleMesh world = placeMesh(meshShape(spec), spec);
+            Simulated s{m, nullptr,
+                        std::make_unique<sim::Jelly>(
+                            world, sim::jellySettingsFor(*spec.jelly, scene.time.fps))};
+            simulated_.push_back(std::move(s));
+        }
+    }
 }
 
 void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
     if (!animation_.empty()) animation_.apply(clock_.timeOfFrame(frame), renderer.scene());
-    for (Water& w : waters_) {
-        // Only a new frame changes the surface: a camera move on the same frame re-voxelizes
-        // nothing.
-        if (w.frameSet == frame) continue;
-        w.surface->advanceToFrame(frame);
-        renderer.setMesh(w.mesh, w.surface->mesh());
-        w.frameSet = frame;
+    for (Simulated& s : simulated_) {
+        if (s.frameSet == frame) continue;
+        if (s.water) {
+            s.water->advanceToFrame(frame);
+            renderer.setMesh(s.mesh, s.water->mesh());
+        } else {
+            s.jelly->advanceToFrame(frame);
+            renderer.setMesh(s.mesh, unplaceMesh(s.jelly->mesh(), renderer.scene().meshes[s.mesh]));
+        }
+        s.frameSet = frame;
     }
 }
 

@@ -1,14 +1,16 @@
 #pragma once
 // What the commands that render a scene do to the renderer before each frame, so that `eikon
 // render` and `eikon view` show the same state at the same frame: the scene's keyframe tracks
-// evaluated at the frame's time on the one clock (sim/clock.h, the scene's fps), and every water
-// surface stepped to that frame (from rest at frame 0, so a frame is the same however reached).
+// evaluated at the frame's time on the one clock (sim/clock.h, the scene's fps), and every
+// simulated mesh (water surfaces, jellies) stepped to that frame from its start at frame 0, so a
+// frame is the same however it is reached.
 #include <memory>
 #include <vector>
 
 #include "render/frame_renderer.h"
 #include "sim/animation.h"
 #include "sim/clock.h"
+#include "sim/jelly.h"
 #include "sim/water_surface.h"
 
 namespace eikon::app {
@@ -23,12 +25,15 @@ public:
 private:
     sim::SceneAnimation animation_;
     SimulationClock clock_;
-    struct Water {
+    // A simulated mesh: only a new frame changes it, so a camera move on the same frame
+    // re-voxelizes nothing.
+    struct Simulated {
         size_t mesh;
-        std::unique_ptr<sim::WaterSurface> surface;
-        int frameSet = -1;  // the frame whose surface the renderer has
+        std::unique_ptr<sim::WaterSurface> water;
+        std::unique_ptr<sim::Jelly> jelly;
+        int frameSet = -1;  // the frame whose mesh the renderer has
     };
-    std::vector<Water> waters_;
+    std::vector<Simulated> simulated_;
 };
 
 }  // namespace eikon::app

@@ -46,6 +46,14 @@ int materialNamed(const Scene& scene, const std::string& name) {
 
 std::optional<AnimationTarget> meshTarget(const Scene& scene, int i, const std::string& key,
                                           std::string& why) {
+    const MeshObjectSpec& mesh = scene.meshes[size_t(i)];
+    const bool simulated = mesh.jelly.has_value() || mesh.shape == MeshShapeType::Water;
+    if (simulated && (key == "translate" || key == "scale" || key == "rotation")) {
+        why = "mesh '" + mesh.name + "' moves by its own simulation (" +
+              (mesh.jelly ? "jelly" : "water") +
+              "); its placement only sets where it starts and cannot be animated";
+        return std::nullopt;
+    }
     if (key == "translate") return make(TargetKind::MeshTranslate, i, 3);
     if (key == "scale") return make(TargetKind::MeshScale, i, 3, 1e-6, 1e30);
     if (key == "rotation") {

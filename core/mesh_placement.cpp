@@ -33,4 +33,11 @@ TriangleMesh placeMesh(const TriangleMesh& local, const MeshObjectSpec& spec) {
     return world;
 }
 
+TriangleMesh unplaceMesh(const TriangleMesh& world, const MeshObjectSpec& spec) {
+    TriangleMesh local = world;
+    const glm::quat inverse = glm::conjugate(spec.rotation);
+    for (glm::vec3& p : local.positions) p = (inverse * (p - spec.translation)) / spec.scale;
+    return local;
+}
+
 }  // namespace eikon

@@ -15,4 +15,8 @@ TriangleMesh meshShape(const MeshObjectSpec& spec);
 // the parser, which wants scales > 0) would flip the winding.
 TriangleMesh placeMesh(const TriangleMesh& local, const MeshObjectSpec& spec);
 
+// The inverse: world positions back into the mesh's object space (for deformers that simulate in
+// the world, such as the jelly, whose result the renderer places again).
+TriangleMesh unplaceMesh(const TriangleMesh& world, const MeshObjectSpec& spec);
+
 }  // namespace eikon

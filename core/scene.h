@@ -119,6 +119,28 @@ struct WaterSpec {
     std::vector<WaterDropletSpec> droplets;
 };
 
+// A jelly deformer on a mesh (sim/jelly.h): a mass-spring body that keeps its volume, under
+// gravity, on a floor, poked at given times; stepped on the scene's clock in world space.
+struct JellyPokeSpec {
+    double time = 0.0;
+    glm::vec3 position{0.0f};  // world space
+    float radius = 0.1f;
+    glm::vec3 velocity{0.0f};
+};
+
+struct JellySpec {
+    float mass = 1.0f;
+    float stiffness = 150.0f;
+    float bendStiffness = 40.0f;
+    float volumeStiffness = 300.0f;
+    float damping = 0.0f;
+    glm::vec3 gravity{0.0f, -9.81f, 0.0f};
+    std::optional<float> floorY;  // none: no floor
+    float friction = 5.0f;
+    int substeps = 40;
+    std::vector<JellyPokeSpec> pokes;
+};
+
 struct MeshObjectSpec {
     std::string name;  // unique among meshes and materials
     MeshShapeType shape = MeshShapeType::File;
@@ -129,6 +151,7 @@ struct MeshObjectSpec {
     glm::vec3 boxMin{-0.5f};  // Box
     glm::vec3 boxMax{0.5f};   // Box
     WaterSpec water;          // Water
+    std::optional<JellySpec> jelly;  // a deformer: the mesh wobbles as a jelly
     glm::vec3 scale{1.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z
     glm::vec3 translation{0.0f};

@@ -110,6 +110,43 @@ void readRotation(Object& object, MeshObjectSpec& mesh) {
     }
 }
 
+JellyPokeSpec readPoke(const Value& value) {
+    Object object(value, "a poke");
+    JellyPokeSpec p;
+    p.time = object.required("time", "seconds >= 0").number(Range::atLeast(0.0));
+    p.position = object.required("position", "an array of 3 numbers [x, y, z]").vec3();
+    if (auto r = object.optional("radius")) p.radius = r->floatNumber(Range::greaterThan(0.0));
+    p.velocity = object.required("velocity", "an array of 3 numbers [x, y, z]").vec3();
+    object.finish();
+    return p;
+}
+
+JellySpec readJelly(Object& object) {
+    JellySpec j;
+    if (auto m = object.optional("mass")) j.mass = m->floatNumber(Range::greaterThan(0.0));
+    if (auto k = object.optional("stiffness")) j.stiffness = k->floatNumber(Range::greaterThan(0.0));
+    if (auto k = object.optional("bend_stiffness"))
+        j.bendStiffness = k->floatNumber(Range::atLeast(0.0));
+    if (auto k = object.optional("volume_stiffness"))
+        j.volumeStiffness = k->floatNumber(Range::atLeast(0.0));
+    if (auto d = object.optional("damping")) j.damping = d->floatNumber(Range::atLeast(0.0));
+    if (auto g = object.optional("gravity")) j.gravity = g->vec3();
+    if (auto f = object.optional("floor")) j.floorY = f->floatNumber();
+    if (auto f = object.optional("friction")) j.friction = f->floatNumber(Range::atLeast(0.0));
+    if (auto n = object.optional("substeps")) j.substeps = int(n->integer(1, 10000));
+    if (auto pokes = object.optional("pokes"))
+        for (const Value& p : pokes->elements("an array of pokes")) j.pokes.push_back(readPoke(p));
+    return j;
+}
+
+void readDeformer(const Value& value, MeshObjectSpec& mesh) {
+    Object object(value, "a deformer");
+    object.required("type", "\"jelly\"").choice({"jelly"});
+    object.setKind("a jelly deformer");
+    mesh.jelly = readJelly(object);
+    object.finish();
+}
+
 void readBlur(const Value& value, MeshObjectSpec& mesh) {
     Object object(value, "the index blur");
     if (auto s = object.optional("sigma_voxels"))
@@ -149,6 +186,11 @@ MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDi
                                    : s->vec3(Range::greaterThan(0.0));
     }
     if (auto blur = object.optional("blur")) readBlur(*blur, mesh);
+    if (auto deformer = object.optional("deformer")) {
+        if (mesh.shape == MeshShapeType::Water)
+            deformer->fail("a water shape moves by its own equation; it takes no deformer");
+        readDeformer(*deformer, mesh);
+    }
 
     optics.name = mesh.name;
     if (auto ior = object.optional("ior")) optics.ior = ior->floatNumber(Range::atLeast(1.0));

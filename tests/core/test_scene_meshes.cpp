@@ -107,6 +107,19 @@ TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]
           "/meshes/0/shape/droplets/0/position/0", "in [-1, 1]");
     fails(R"([{"name": "w", "shape": {"type": "water", "size": [2, 2]}, "ior": 1.33}])",
           "/meshes/0/shape/depth", "missing required key");
+    fails(R"([{"name": "w", "shape": {"type": "water", "size": [2, 2], "depth": 0.3}, "ior": 1.33,
+              "deformer": {"type": "jelly"}}])",
+          "/meshes/0/deformer", "takes no deformer");
+    fails(R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4,
+              "deformer": {"type": "jelly", "stiffnes": 3}}])",
+          "/meshes/0/deformer/stiffnes", "stiffness");
+    fails(R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4,
+              "deformer": {"type": "jelly", "pokes": [{"time": 1, "position": [0, 0, 0]}]}}])",
+          "/meshes/0/deformer/pokes/0", "velocity");
+    fails(R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4,
+              "deformer": {"type": "jelly"}}])",
+          "/animation/0/target", "moves by its own simulation",
+          R"(, "animation": [{"target": "/meshes/0/translate", "times": [0], "values": [[0, 0, 0]]}])");
     // Without meshes, sources and materials stay required.
     CHECK_THROWS_WITH(parseScene("{}", "m.json"), Catch::Contains("missing required key 'sources'"));
 }

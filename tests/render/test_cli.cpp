@@ -256,3 +256,26 @@ TEST_CASE("eikon render steps a scene's water surface frame by frame", "[cli][wa
     REQUIRE(alone.exitCode == 0);
     CHECK(readFile(dir + "/b/pool_0002.png") == readFile(dir + "/a/pool_0002.png"));
 }
+
+TEST_CASE("eikon render steps a jelly mesh on the scene's clock", "[cli][jelly]") {
+    const std::string dir = scratchDir("cli_render_jelly");
+    const std::string scene = dir + "/jelly.json";
+    writeFile(scene, R"({
+  "volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "resolution": 16},
+  "meshes": [{"name": "blob", "shape": {"type": "icosphere", "radius": 0.4, "subdivisions": 2},
+              "translate": [0, 0.2, 0], "emission": [1, 0.6, 0.3], "absorption": [2, 2, 2],
+              "deformer": {"type": "jelly", "floor": -0.8, "damping": 1}}],
+  "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
+  "render": {"width": 24, "height": 16},
+  "output": {"name": "blob", "png": true},
+  "time": {"fps": 12, "frame_start": 0, "frame_end": 3}
+})");
+    const RunResult r = runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/a"), dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK(readFile(dir + "/a/blob_0000.png") != readFile(dir + "/a/blob_0003.png"));  // it fell
+    const RunResult alone =
+        runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/b") + " --frames 3-3", dir);
+    REQUIRE(alone.exitCode == 0);
+    CHECK(readFile(dir + "/b/blob_0003.png") == readFile(dir + "/a/blob_0003.png"));
+}
