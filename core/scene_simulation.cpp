@@ -152,6 +152,7 @@ void readAdvection(Object& object, SmokeSimulationSpec& sim) {
                       : l == "revert" ? SimLimiter::Revert
                                       : SimLimiter::None;
     }
+    if (auto conserve = object.optional("conserve_mass")) sim.conserveMass = conserve->boolean();
 }
 
 void readForces(Object& object, SmokeSimulationSpec& sim) {

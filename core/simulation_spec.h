@@ -47,6 +47,8 @@ struct SmokeSimulationSpec {
     int maxSubsteps = 64;
     SimAdvection advection = SimAdvection::MacCormack;
     SimLimiter limiter = SimLimiter::Revert;
+    // Restore the density advection loses or gains each step (sim/mass_correction.h).
+    bool conserveMass = false;
     float buoyancyAlpha = 0.1f;
     float buoyancyBeta = 1.0f;
     float ambientTemperature = 0.0f;

@@ -46,6 +46,7 @@ SmokeSettings smokeSettingsFrom(const SmokeSimulationSpec& spec, double fps) {
     s.maxCfl = spec.cfl;
     s.maxSubsteps = spec.maxSubsteps;
     s.advection = {schemeFrom(spec.advection), limiterFrom(spec.limiter)};
+    s.conserveMass = spec.conserveMass;
     s.forces.buoyancyAlpha = spec.buoyancyAlpha;
     s.forces.buoyancyBeta = spec.buoyancyBeta;
     s.forces.ambientTemperature = spec.ambientTemperature;

@@ -713,7 +713,7 @@ const std::string kSimulation = R"("simulation": {
   "resolution": 24,
   "walls": {"+y": "open", "-x": "closed"},
   "cfl": 2, "max_substeps": 16,
-  "advection": "bfecc", "limiter": "clamp",
+  "advection": "bfecc", "limiter": "clamp", "conserve_mass": true,
   "buoyancy_alpha": 0.05, "buoyancy_beta": 2, "ambient_temperature": 1,
   "vorticity": 1.5, "wind": [0.5, 0, 0],
   "pressure": {"tolerance": 1e-4, "max_iterations": 200},
@@ -754,6 +754,7 @@ TEST_CASE("a simulation section parses into the smoke settings", "[scene][simula
         CHECK(sim.maxSubsteps == 16);
         CHECK(sim.advection == eikon::SimAdvection::Bfecc);
         CHECK(sim.limiter == eikon::SimLimiter::Clamp);
+        CHECK(sim.conserveMass);
         CHECK(sim.buoyancyAlpha == 0.05f);
         CHECK(sim.buoyancyBeta == 2.0f);
         CHECK(sim.ambientTemperature == 1.0f);
@@ -785,6 +786,7 @@ TEST_CASE("a simulation section parses into the smoke settings", "[scene][simula
         CHECK(sim.walls == model.walls);
         CHECK(sim.advection == eikon::SimAdvection::MacCormack);
         CHECK(sim.limiter == eikon::SimLimiter::Revert);
+        CHECK_FALSE(sim.conserveMass);
         CHECK(sim.sources.empty());
         CHECK(sim.obstacles.empty());
         CHECK(sim.cacheDirectory == "cache");
