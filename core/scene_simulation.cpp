@@ -87,6 +87,11 @@ void readPressure(const Value& value, SmokeSimulationSpec& sim) {
     if (auto iterations = object.optional("max_iterations")) {
         sim.pressureMaxIterations = static_cast<int>(iterations->integer(1, 100000));
     }
+    if (auto preconditioner = object.optional("preconditioner")) {
+        sim.pressurePreconditioner = preconditioner->choice({"multigrid", "mic0"}) == "mic0"
+                                         ? SimPreconditioner::Mic0
+                                         : SimPreconditioner::Multigrid;
+    }
     object.finish();
 }
 

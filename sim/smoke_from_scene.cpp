@@ -54,6 +54,9 @@ SmokeSettings smokeSettingsFrom(const SmokeSimulationSpec& spec, double fps) {
     s.forces.wind = spec.wind;
     s.pressure.tolerance = spec.pressureTolerance;
     s.pressure.maxIterations = spec.pressureMaxIterations;
+    s.pressure.preconditioner = spec.pressurePreconditioner == SimPreconditioner::Mic0
+                                    ? PressurePreconditioner::Mic0
+                                    : PressurePreconditioner::Multigrid;
     return s;
 }
 

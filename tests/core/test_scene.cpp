@@ -716,7 +716,7 @@ const std::string kSimulation = R"("simulation": {
   "advection": "bfecc", "limiter": "clamp", "conserve_mass": true,
   "buoyancy_alpha": 0.05, "buoyancy_beta": 2, "ambient_temperature": 1,
   "vorticity": 1.5, "wind": [0.5, 0, 0],
-  "pressure": {"tolerance": 1e-4, "max_iterations": 200},
+  "pressure": {"tolerance": 1e-4, "max_iterations": 200, "preconditioner": "mic0"},
   "sources": [{"type": "sphere", "center": [0, 0.4, 0], "radius": 0.3, "density_rate": 3,
                "temperature_rate": 20, "velocity": [0, 1, 0], "velocity_rate": 10},
               {"type": "box", "min": [-1, 0, -1], "max": [1, 0.1, 1]}],
@@ -762,6 +762,7 @@ TEST_CASE("a simulation section parses into the smoke settings", "[scene][simula
         CHECK(sim.wind == glm::vec3(0.5f, 0, 0));
         CHECK(sim.pressureTolerance == 1e-4);
         CHECK(sim.pressureMaxIterations == 200);
+        CHECK(sim.pressurePreconditioner == eikon::SimPreconditioner::Mic0);
         REQUIRE(sim.sources.size() == 2);
         CHECK(sim.sources[0].shape.kind == eikon::SimShapeSpec::Kind::Sphere);
         CHECK(sim.sources[0].shape.radius == 0.3f);
@@ -787,6 +788,7 @@ TEST_CASE("a simulation section parses into the smoke settings", "[scene][simula
         CHECK(sim.advection == eikon::SimAdvection::MacCormack);
         CHECK(sim.limiter == eikon::SimLimiter::Revert);
         CHECK_FALSE(sim.conserveMass);
+        CHECK(sim.pressurePreconditioner == eikon::SimPreconditioner::Multigrid);
         CHECK(sim.sources.empty());
         CHECK(sim.obstacles.empty());
         CHECK(sim.cacheDirectory == "cache");
