@@ -426,7 +426,7 @@ TEST_CASE("out-of-range values name the allowed range", "[scene]") {
 }
 
 TEST_CASE("a gladstone_dale material maps temperature to n below that of ambient air", "[scene]") {
-    SECTION("the linearised index per kelvin, with the default and a given ambient") {
+    SECTION("the index slope and 1/T_ambient, with the default and a given ambient") {
         const eikon::Scene scene = eikon::parseScene(
             R"({"sources": [{"type": "sphere"}], "materials": [
                 {"name": "air", "field": "temperature", "gladstone_dale": 0.00029},
@@ -436,9 +436,13 @@ TEST_CASE("a gladstone_dale material maps temperature to n below that of ambient
         const eikon::MaterialSpec& air = scene.materials[0];
         CHECK(air.gladstoneDale == 0.00029f);
         CHECK(air.ambientKelvin == 288.15f);
-        // n = 1 + θ·(ior − 1): 10 K above ambient lowers n by 10·2.9e-4/288.15.
+        // ior − 1 is the slope at ambient; the exact map also needs 1/T_ambient
+        // (tests/render/test_refraction.cpp checks n against the closed form).
         CHECK(air.ior == Approx(1.0 - 0.00029 / 288.15).epsilon(1e-7));
         CHECK(scene.materials[1].ior == Approx(1.0 - 0.5 / 250.0).epsilon(1e-7));
+        CHECK(air.indexSlope() == Approx(-0.00029 / 288.15).epsilon(1e-6));
+        CHECK(air.inverseAmbient() == Approx(1.0 / 288.15).epsilon(1e-7));
+        CHECK(scene.materials[1].inverseAmbient() == Approx(1.0 / 250.0).epsilon(1e-7));
     }
     SECTION("ior and gladstone_dale together") {
         const Failure f = failureOf(R"({"sources": [{"type": "sphere"}], "materials": [
