@@ -121,7 +121,8 @@ void printSettings(const Scene& scene, const SmokeSimulationSpec& s, const Bench
         "%g)\n",
         double(s.buoyancyAlpha), double(s.buoyancyBeta), double(s.ambientTemperature),
         double(s.vorticity), double(s.wind.x), double(s.wind.y), double(s.wind.z));
-    std::printf("# pressure: MIC(0)-PCG, relative max-norm tolerance %g, at most %d iterations\n",
+    std::printf("# pressure: %s, relative max-norm tolerance %g, at most %d iterations\n",
+                s.pressurePreconditioner == SimPreconditioner::Mic0 ? "MIC(0)-PCG" : "MG-PCG",
                 s.pressureTolerance, s.pressureMaxIterations);
     for (const SmokeSourceSpec& src : s.sources)
         std::printf(

@@ -75,8 +75,14 @@ int runSimulate(const SimulateOptions& o) {
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                 .count();
         totalMs += ms;
-        std::printf("frame %d: %d substeps, %d CG iterations, CFL %.2f, %.1f ms%s%s\n", frame,
-                    stats.substeps, stats.cgIterations, stats.cfl, ms, write ? " -> " : "",
+        // With conserve_mass, the advection's density deficit the correction put back (relative,
+        // the largest of the frame's substeps) and what the bounds left uncorrected.
+        char mass[96] = "";
+        if (spec.conserveMass)
+            std::snprintf(mass, sizeof mass, ", mass deficit %+.2e corrected (left %+.1e)",
+                          stats.massDeficit, stats.massRemainder);
+        std::printf("frame %d: %d substeps, %d CG iterations, CFL %.2f%s, %.1f ms%s%s\n", frame,
+                    stats.substeps, stats.cgIterations, stats.cfl, mass, ms, write ? " -> " : "",
                     write ? path.c_str() : " (before --frames, not written)");
         std::fflush(stdout);
     }

@@ -143,20 +143,76 @@ DenseGrid resampleToDense(const Field& field, const RenderVolume& volume) {
     return out;
 }
 
+namespace {
+
+// Where voxel v of the volume lies, for messages.
+std::string voxelPosition(const RenderVolume& volume, size_t v) {
+    const glm::ivec3 res = volume.resolution;
+    const int i = int(v % size_t(res.x));
+    const int j = int((v / size_t(res.x)) % size_t(res.y));
+    const int k = int(v / (size_t(res.x) * size_t(res.y)));
+    const glm::vec3 p = volume.voxelCenter(i, j, k);
+    std::ostringstream out;
+    out << std::setprecision(4) << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+    return out.str();
+}
+
+const DenseGrid& denseFor(const Scene& scene, const std::map<std::string, DenseGrid>& dense,
+                          size_t m) {
+    auto it = dense.find(scene.materials[m].field);
+    if (it == dense.end())
+        throw Error(scene.path + ":/materials/" + std::to_string(m) + "/field",
+                    "field '" + scene.materials[m].field + "' was not resampled");
+    return it->second;
+}
+
+// A Gladstone–Dale material's field is a temperature excess over ambient: at or below
+// −ambientKelvin it would be at or below absolute zero, where n − 1 ∝ 1/T has no meaning (and
+// shaders/shared/material_index.h would divide by zero or flip sign).
+void checkAboveAbsoluteZero(const Scene& scene, const FieldRegistry& fields, const DenseGrid& grid,
+                            size_t m) {
+    const MaterialSpec& mat = scene.materials[m];
+    const float floor = -mat.ambientKelvin;
+    // The first offending voxel in index order, whatever the thread count.
+    const size_t count = grid.values.size();
+    const size_t bad = tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, count), count,
+        [&](const tbb::blocked_range<size_t>& r, size_t first) {
+            for (size_t v = r.begin(); v != r.end() && v < first; ++v)
+                if (!(grid.values[v] > floor)) return v;
+            return first;
+        },
+        [](size_t a, size_t b) { return std::min(a, b); });
+    if (bad == count) return;
+    std::ostringstream reason;
+    reason << std::setprecision(7);
+    reason << "material '" << mat.name << "' (gladstone_dale " << mat.gladstoneDale
+           << ", ambient_kelvin " << mat.ambientKelvin << ") reads field '" << mat.field << "'";
+    if (fields.has(mat.field)) reason << " (from " << fields.get(mat.field).origin << ")";
+    reason << " as a temperature excess in kelvin, which is " << grid.values[bad] << " at "
+           << voxelPosition(grid.volume, bad) << ": at or below absolute zero (-"
+           << mat.ambientKelvin << "), where Gladstone-Dale has no meaning";
+    throw Error(scene.path + ":/materials/" + std::to_string(m) + "/field", reason.str());
+}
+
+}  // namespace
+
 void checkRefractiveIndex(const Scene& scene, const FieldRegistry& fields,
                           const std::map<std::string, DenseGrid>& dense) {
-    std::vector<size_t> refracting;  // materials with ior != 1
-    for (size_t m = 0; m < scene.materials.size(); ++m)
-        if (scene.materials[m].ior != 1.0f) refracting.push_back(m);
+    // Gladstone–Dale air is lighter than the ambient air where it is hotter, so its n < 1 is
+    // meant (n is relative to the ambient air); its own check is the temperature's. The linear
+    // materials together must keep n >= 1.
+    std::vector<size_t> refracting;  // linear materials with ior != 1
+    for (size_t m = 0; m < scene.materials.size(); ++m) {
+        const MaterialSpec& mat = scene.materials[m];
+        if (mat.gladstoneDale > 0.0f)
+            checkAboveAbsoluteZero(scene, fields, denseFor(scene, dense, m), m);
+        else if (mat.ior != 1.0f)
+            refracting.push_back(m);
+    }
     if (refracting.empty()) return;
     std::vector<const DenseGrid*> grids;
-    for (size_t m : refracting) {
-        auto it = dense.find(scene.materials[m].field);
-        if (it == dense.end())
-            throw Error(scene.path + ":/materials/" + std::to_string(m) + "/field",
-                        "field '" + scene.materials[m].field + "' was not resampled");
-        grids.push_back(&it->second);
-    }
+    for (size_t m : refracting) grids.push_back(&denseFor(scene, dense, m));
     auto indexAt = [&](size_t v) {
         float n = 1.0f;  // summed as shaders/shared/refraction.h sums it
         for (size_t r = 0; r < refracting.size(); ++r)
@@ -202,19 +258,14 @@ void checkRefractiveIndex(const Scene& scene, const FieldRegistry& fields,
     }
     const size_t m = refracting[worst];
     const MaterialSpec& mat = scene.materials[m];
-    const RenderVolume& volume = grids[worst]->volume;
-    const glm::ivec3 res = volume.resolution;
-    const int i = int(bad % size_t(res.x));
-    const int j = int((bad / size_t(res.x)) % size_t(res.y));
-    const int k = int(bad / (size_t(res.x) * size_t(res.y)));
-    const glm::vec3 p = volume.voxelCenter(i, j, k);
     std::ostringstream reason;
+    reason << std::setprecision(7);
     reason << "material '" << mat.name << "' (ior " << mat.ior << ") reads field '" << mat.field
            << "'";
     if (fields.has(mat.field)) reason << " (from " << fields.get(mat.field).origin << ")";
-    reason << ", which is " << grids[worst]->values[bad] << std::setprecision(4) << " at (" << p.x
-           << ", " << p.y << ", " << p.z << std::setprecision(7)
-           << "): the materials make n = " << indexAt(bad) << " there (the lowest; n < 1 in "
+    reason << ", which is " << grids[worst]->values[bad] << " at "
+           << voxelPosition(grids[worst]->volume, bad)
+           << ": the materials make n = " << indexAt(bad) << " there (the lowest; n < 1 in "
            << lowest.below << " voxels), and n must be >= 1 (a field that a refracting material "
            << "reads must not be negative)";
     throw Error(scene.path + ":/materials/" + std::to_string(m) + "/field", reason.str());

@@ -28,11 +28,13 @@ constexpr int kMeshVoxelsAcross = 128;
 // when a sample is NaN or infinite.
 DenseGrid resampleToDense(const Field& field, const RenderVolume& volume);
 
-// The refractive index the materials make of the resampled fields, n = 1 + Σ f·(ior − 1), must
-// be >= 1 at every voxel: a field a material with ior > 1 reads must not go negative there.
-// Throws eikon::Error at the first voxel (x fastest) where it is not, naming the material's JSON
-// path, its field, where the field came from, the position and n. `dense` holds, by field name,
-// the grid of every field a material reads.
+// The refractive index the linear materials make of the resampled fields, n = 1 + Σ f·(ior − 1),
+// must be >= 1 at every voxel: a field a material with ior > 1 reads must not go negative there.
+// A Gladstone–Dale material's field (a temperature excess) must stay above absolute zero,
+// −ambient_kelvin; its n < 1 where the air is hot is meant (n is relative to the ambient air).
+// Throws eikon::Error at the first voxel (x fastest) where either fails, naming the material's
+// JSON path, its field, where the field came from, the position and n or the value. `dense`
+// holds, by field name, the grid of every field a material reads.
 void checkRefractiveIndex(const Scene& scene, const FieldRegistry& fields,
                           const std::map<std::string, DenseGrid>& dense);
 

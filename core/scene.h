@@ -69,7 +69,8 @@ struct SourceSpec {
 
 // One material maps one scalar field f to optics, linearly per unit of f:
 // absorption α = f·absorption, scattering σ = f·scattering (extinction κ = σ + α, per scene unit),
-// emission = f·emission (radiance per scene unit), refractive index n = 1 + f·(ior − 1).
+// emission = f·emission (radiance per scene unit), refractive index n = 1 + f·(ior − 1) (except
+// Gladstone–Dale air, below).
 // The optics of several materials add up.
 struct MaterialSpec {
     std::string name;
@@ -82,13 +83,23 @@ struct MaterialSpec {
     // the parser derives it from gladstoneDale.
     float ior = 1.0f;
     // Hot air (Gladstone–Dale at constant pressure: n − 1 ∝ gas density ∝ 1/T). When > 0, the
-    // field is the temperature T − T_ambient in kelvin and gladstoneDale is n − 1 of the air at
-    // ambientKelvin; n is taken relative to that air (n = 1 at ambient), linearised about it:
-    // n = 1 − f·gladstoneDale/ambientKelvin, i.e. ior = 1 − gladstoneDale/ambientKelvin. Its
-    // relative error in n − 1 is f/ambientKelvin (the exact 1/T form would need a per-voxel map,
-    // which the linear material path does not have).
+    // field f is the temperature excess T − T_ambient in kelvin and gladstoneDale is n − 1 of the
+    // air at ambientKelvin; n is taken relative to that air (n = 1 at ambient), exactly:
+    // n = 1 + gladstoneDale·(T_ambient/(T_ambient + f) − 1) = 1 − gladstoneDale·f/(T_ambient + f)
+    // (shaders/shared/material_index.h, per voxel on the GPU and the CPU twin). The parser sets
+    // ior = 1 − gladstoneDale/ambientKelvin, the slope at ambient, which is what "does this
+    // material refract" tests read; the map itself is not linear in f.
     float gladstoneDale = 0.0f;
     float ambientKelvin = 288.15f;
+
+    // n − 1 per unit of the field at f = 0: ior − 1, or −gladstoneDale/ambientKelvin computed
+    // directly (ior itself, a float next to 1, keeps only ~2 digits of a real air's 1e-6).
+    float indexSlope() const {
+        return gladstoneDale > 0.0f ? -gladstoneDale / ambientKelvin : ior - 1.0f;
+    }
+    // 1/T_ambient for a Gladstone–Dale material, 0 for a linear one: the one number that makes
+    // shaders/shared/material_index.h exact for hot air.
+    float inverseAmbient() const { return gladstoneDale > 0.0f ? 1.0f / ambientKelvin : 0.0f; }
 };
 
 // A closed triangle mesh voxelized into the render volume every frame it changes (Sun et al. 2008

@@ -87,6 +87,11 @@ void readPressure(const Value& value, SmokeSimulationSpec& sim) {
     if (auto iterations = object.optional("max_iterations")) {
         sim.pressureMaxIterations = static_cast<int>(iterations->integer(1, 100000));
     }
+    if (auto preconditioner = object.optional("preconditioner")) {
+        sim.pressurePreconditioner = preconditioner->choice({"multigrid", "mic0"}) == "mic0"
+                                         ? SimPreconditioner::Mic0
+                                         : SimPreconditioner::Multigrid;
+    }
     object.finish();
 }
 
@@ -152,6 +157,7 @@ void readAdvection(Object& object, SmokeSimulationSpec& sim) {
                       : l == "revert" ? SimLimiter::Revert
                                       : SimLimiter::None;
     }
+    if (auto conserve = object.optional("conserve_mass")) sim.conserveMass = conserve->boolean();
 }
 
 void readForces(Object& object, SmokeSimulationSpec& sim) {

@@ -15,6 +15,7 @@ namespace eikon {
 enum class SimWall { Closed, Open };
 enum class SimAdvection { SemiLagrangian, MacCormack, Bfecc };
 enum class SimLimiter { None, Clamp, Revert };
+enum class SimPreconditioner { Mic0, Multigrid };
 
 // A sphere (center, radius) or a box (boxMin, boxMax), in scene units.
 struct SimShapeSpec {
@@ -47,6 +48,8 @@ struct SmokeSimulationSpec {
     int maxSubsteps = 64;
     SimAdvection advection = SimAdvection::MacCormack;
     SimLimiter limiter = SimLimiter::Revert;
+    // Restore the density advection loses or gains each step (sim/mass_correction.h).
+    bool conserveMass = false;
     float buoyancyAlpha = 0.1f;
     float buoyancyBeta = 1.0f;
     float ambientTemperature = 0.0f;
@@ -54,6 +57,7 @@ struct SmokeSimulationSpec {
     glm::vec3 wind{0.0f};
     double pressureTolerance = 1e-5;
     int pressureMaxIterations = 500;
+    SimPreconditioner pressurePreconditioner = SimPreconditioner::Multigrid;
     std::vector<SmokeSourceSpec> sources;
     std::vector<SimShapeSpec> obstacles;
     // Where `eikon simulate` writes when no -o is given (resolved against the scene's folder),

@@ -116,7 +116,7 @@ std::vector<unsigned char> photonInputs(const ViewSetup& setup,
 }
 
 // The bytes the ∇n volume (and the octree built on its n) depend on: the volume, the materials'
-// ior and field slots, and the versions of the field grids.
+// index maps (ior − 1, 1/T_ambient) and field slots, and the versions of the field grids.
 std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
                                           const std::vector<const DenseGrid*>& grids) {
     const shared::GpuViewParams& p = setup.params;
@@ -126,6 +126,7 @@ std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
         float(p.resolution.z), float(p.resolution.w)};
     for (int m = 0; m < p.resolution.w; ++m) {
         values.push_back(p.materials[m].emission.w);
+        values.push_back(p.materials[m].scattering.w);  // Gladstone–Dale's 1/T_ambient
         values.push_back(float(p.materials[m].slot.x));
     }
     std::vector<unsigned char> key;

@@ -6,6 +6,7 @@
 
 #include "render/refraction_volume.h"
 #include "render/volume_kernels_cpu.h"
+#include "shaders/shared/material_index.h"  // at file scope: refraction.h calls it
 
 EK_NAMESPACE_BEGIN
 

@@ -132,8 +132,9 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
             slot = setup.slotFields.insert(setup.slotFields.end(), mat.field);
         shared::GpuMaterial& g = p.materials[m];
         g.absorption = v4(mat.absorption, mat.g);
-        g.scattering = v4(mat.scattering);
-        g.emission = v4(mat.emission, mat.ior);
+        // w: what makes a Gladstone–Dale material's index exact (shaders/shared/material_index.h).
+        g.scattering = v4(mat.scattering, mat.inverseAmbient());
+        g.emission = v4(mat.emission, mat.indexSlope());
         g.slot = glm::ivec4(int(slot - setup.slotFields.begin()), 0, 0, 0);
     }
     for (size_t l = 0; l < scene.lights.size(); ++l) p.lights[l] = packLight(scene.lights[l]);

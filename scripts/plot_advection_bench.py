@@ -44,10 +44,17 @@ def main():
             pts = sorted((int(r["resolution"]), float(r["ms_per_step"]), float(r["l1"]))
                          for r in mine if (r["scheme"], r["limiter"]) == config)
             colour, marker = STYLE.get(config, ("black", "."))
-            label = config[0] if config[1] == "none" and config[0] == "semi-Lagrangian" \
-                else f"{config[0]} + {config[1]}"
+            label = config[0] if config[1] == "none" else f"{config[0]} + {config[1]}"
+            # The OpenVDB peer (--peer openvdb) dashed, coloured as our matching scheme.
+            peer = config[0].startswith("OpenVDB ")
+            if peer:
+                ours = {"SEMI": "semi-Lagrangian", "MID": "semi-Lagrangian", "MAC": "MacCormack",
+                        "BFECC": "BFECC"}[config[0].split()[1]]
+                colour = STYLE.get((ours, config[1] if ours != "semi-Lagrangian" else "none"),
+                                   ("black", "."))[0]
+                marker = "." if config[0].endswith("SEMI") else "*"
             ax.plot([p[1] for p in pts], [p[2] for p in pts], color=colour, marker=marker,
-                    label=label)
+                    linestyle="--" if peer else "-", label=label)
             for n, ms, l1 in pts:
                 ax.annotate(str(n), (ms, l1), textcoords="offset points", xytext=(4, 3),
                             fontsize=7, color=colour)

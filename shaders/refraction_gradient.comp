@@ -4,6 +4,7 @@
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "volume_bindings.glsl"
+#include "shared/material_index.h"
 #include "shared/refraction.h"
 
 layout(rgba32f, binding = 2) writeonly uniform image3D outGradient;  // xyz: ∇n; w: n

@@ -19,13 +19,26 @@ MacGrid unitBox(glm::ivec3 n, float h) {
     return MacGrid(d);
 }
 
-// Advects the density once, adding the wall time of the call to `ms`.
-void advectDensityTimed(MacGrid& g, float dt, const AdvectionSettings& s, double& ms) {
-    Array3 next;
+// advectField() itself.
+class EikonAdvector : public DensityAdvector {
+public:
+    explicit EikonAdvector(const AdvectionSettings& s) : settings_(s) {}
+    void advect(MacGrid& g, float dt) override {
+        Array3 next;
+        advectField(g, g.density, next, dt, settings_);
+        g.density = std::move(next);
+    }
+
+private:
+    AdvectionSettings settings_;
+};
+
+// One step, adding the wall time of the advect call to `ms`.
+void advectTimed(DensityAdvector& advector, MacGrid& g, float dt, double& ms) {
+    advector.setVelocity(g);
     const Clock::time_point t0 = Clock::now();
-    advectField(g, g.density, next, dt, s);
+    advector.advect(g, dt);
     ms += std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-    g.density = std::move(next);
 }
 
 void compare(const std::vector<float>& initial, const Array3& final, AdvectionProblemResult& r) {
@@ -47,6 +60,11 @@ void compare(const std::vector<float>& initial, const Array3& final, AdvectionPr
 
 AdvectionProblemResult zalesakRotation(int n, ZalesakShape shape,
                                        const AdvectionSettings& settings) {
+    EikonAdvector advector(settings);
+    return zalesakRotation(n, shape, advector);
+}
+
+AdvectionProblemResult zalesakRotation(int n, ZalesakShape shape, DensityAdvector& advector) {
     const float h = 1.0f / float(n);
     const int nz = shape == ZalesakShape::Disk ? 2 : n;
     MacGrid g = unitBox({n, n, nz}, h);
@@ -76,12 +94,19 @@ AdvectionProblemResult zalesakRotation(int n, ZalesakShape shape,
     r.resolution = n;
     r.steps = int(std::ceil(0.4f * float(n) * 2.0f * float(kPi)));
     const float dt = 1.0f / float(r.steps);
-    for (int s = 0; s < r.steps; ++s) advectDensityTimed(g, dt, settings, r.advectionMs);
+    advector.load(g);
+    for (int s = 0; s < r.steps; ++s) advectTimed(advector, g, dt, r.advectionMs);
+    advector.store(g);
     compare(initial, g.density, r);
     return r;
 }
 
 AdvectionProblemResult enrightDeformation(int n, const AdvectionSettings& settings, double period) {
+    EikonAdvector advector(settings);
+    return enrightDeformation(n, advector, period);
+}
+
+AdvectionProblemResult enrightDeformation(int n, DensityAdvector& advector, double period) {
     const float h = 1.0f / float(n);
     MacGrid g = unitBox({n, n, n}, h);
     const glm::vec3 centre(0.35f);
@@ -119,12 +144,14 @@ AdvectionProblemResult enrightDeformation(int n, const AdvectionSettings& settin
     r.resolution = n;
     r.steps = int(std::ceil(2.0 * n * period - 1e-9));
     const double dt = period / r.steps;
+    advector.load(g);
     for (int s = 0; s < r.steps; ++s) {
         const float c = float(std::cos(kPi * (s + 0.5) * dt / period));
         for (std::size_t a = 0; a < 3; ++a)
             for (std::size_t m = 0; m < shape[a].count(); ++m) g.velocity[a][m] = c * shape[a][m];
-        advectDensityTimed(g, float(dt), settings, r.advectionMs);
+        advectTimed(advector, g, float(dt), r.advectionMs);
     }
+    advector.store(g);
     compare(initial, g.density, r);
     return r;
 }

@@ -5,10 +5,26 @@
 // benchmark measures exactly what the tests check.
 //
 // Every problem starts from a sharp indicator (1 inside the shape, 0 outside, sampled at cell
-// centres) in a closed unit box, advects it with advectField() at CFL 1 and compares.
+// centres) in a closed unit box, advects it at CFL 1 (with advectField(), or with whatever
+// DensityAdvector it is given: the benchmark's OpenVDB peer) and compares.
 #include "sim/advection.h"
 
 namespace eikon::sim {
+
+// An advection method as the problems drive it. Only advect() is timed; moving data in and out
+// of the method's own representation is not, as setting the velocity is not.
+class DensityAdvector {
+public:
+    virtual ~DensityAdvector() = default;
+    // The initial density is in g.density.
+    virtual void load(const MacGrid& g) { (void)g; }
+    // g's face velocities changed (before every step).
+    virtual void setVelocity(const MacGrid& g) { (void)g; }
+    // One step of dt seconds through g's velocity.
+    virtual void advect(MacGrid& g, float dt) = 0;
+    // Leaves the final density in g.density.
+    virtual void store(MacGrid& g) { (void)g; }
+};
 
 struct AdvectionProblemResult {
     int resolution = 0;  // cells along x (and y; z too unless a slab)
@@ -16,7 +32,7 @@ struct AdvectionProblemResult {
     double l1 = 0.0;          // Σ|φ − φ₀| / Σφ₀ at the end
     double volumeLoss = 0.0;  // 1 − (cells with φ ≥ ½ at the end) / (at the start)
     double massChange = 0.0;  // Σφ / Σφ₀ − 1
-    // Wall time of the advectField() calls alone (setting up and updating the velocity is left
+    // Wall time of the advect calls alone (setting up and updating the velocity is left
     // out), summed over the steps. Measured, never checked: tests do not time anything.
     double advectionMs = 0.0;
 };
@@ -32,6 +48,7 @@ struct AdvectionProblemResult {
 enum class ZalesakShape { Disk, Sphere };
 AdvectionProblemResult zalesakRotation(int n, ZalesakShape shape,
                                        const AdvectionSettings& settings);
+AdvectionProblemResult zalesakRotation(int n, ZalesakShape shape, DensityAdvector& advector);
 
 // Enright et al.'s (2002) deformation test on an n³ box: a sphere of radius 0.15 at
 // (0.35, 0.35, 0.35) in the velocity field
@@ -43,5 +60,6 @@ AdvectionProblemResult zalesakRotation(int n, ZalesakShape shape,
 // speed 2, so ⌈2·n·T⌉ of them.
 AdvectionProblemResult enrightDeformation(int n, const AdvectionSettings& settings,
                                           double period = 3.0);
+AdvectionProblemResult enrightDeformation(int n, DensityAdvector& advector, double period = 3.0);
 
 }  // namespace eikon::sim

@@ -48,30 +48,58 @@ inline void locate(float q, int n, int& i0, float& t) {
 
 }  // namespace
 
-float Array3::sample(glm::vec3 p, float& lo, float& hi) const {
-    const glm::vec3 q = p - offset_;
-    int i, j, k;
+namespace {
+
+// The eight samples around p and the weights along each axis, as both sample() overloads blend
+// them (so that they give the same value bit for bit).
+struct Corners {
+    float c000, c100, c010, c110, c001, c101, c011, c111;
     float tx, ty, tz;
-    locate(q.x, size_.x, i, tx);
-    locate(q.y, size_.y, j, ty);
-    locate(q.z, size_.z, k, tz);
+};
+
+inline Corners cornersAt(const Array3& a, glm::vec3 p) {
+    const glm::vec3 q = p - a.offset();
+    const glm::ivec3 size = a.size();
+    int i, j, k;
+    Corners c;
+    locate(q.x, size.x, i, c.tx);
+    locate(q.y, size.y, j, c.ty);
+    locate(q.z, size.z, k, c.tz);
     // With one sample along an axis both "corners" are the same sample.
-    const int di = size_.x > 1 ? 1 : 0, dj = size_.y > 1 ? 1 : 0, dk = size_.z > 1 ? 1 : 0;
-    const float c000 = (*this)(i, j, k), c100 = (*this)(i + di, j, k);
-    const float c010 = (*this)(i, j + dj, k), c110 = (*this)(i + di, j + dj, k);
-    const float c001 = (*this)(i, j, k + dk), c101 = (*this)(i + di, j, k + dk);
-    const float c011 = (*this)(i, j + dj, k + dk), c111 = (*this)(i + di, j + dj, k + dk);
-    lo = std::min({c000, c100, c010, c110, c001, c101, c011, c111});
-    hi = std::max({c000, c100, c010, c110, c001, c101, c011, c111});
-    const float x00 = c000 + tx * (c100 - c000), x10 = c010 + tx * (c110 - c010);
-    const float x01 = c001 + tx * (c101 - c001), x11 = c011 + tx * (c111 - c011);
-    const float y0 = x00 + ty * (x10 - x00), y1 = x01 + ty * (x11 - x01);
-    return y0 + tz * (y1 - y0);
+    const std::size_t sx = size.x > 1 ? 1 : 0;
+    const std::size_t sy = size.y > 1 ? std::size_t(size.x) : 0;
+    const std::size_t sz = size.z > 1 ? std::size_t(size.x) * std::size_t(size.y) : 0;
+    const float* v = a.values().data() + a.index(i, j, k);
+    c.c000 = v[0];
+    c.c100 = v[sx];
+    c.c010 = v[sy];
+    c.c110 = v[sx + sy];
+    c.c001 = v[sz];
+    c.c101 = v[sx + sz];
+    c.c011 = v[sy + sz];
+    c.c111 = v[sx + sy + sz];
+    return c;
 }
 
+inline float blend(const Corners& c) {
+    const float x00 = c.c000 + c.tx * (c.c100 - c.c000), x10 = c.c010 + c.tx * (c.c110 - c.c010);
+    const float x01 = c.c001 + c.tx * (c.c101 - c.c001), x11 = c.c011 + c.tx * (c.c111 - c.c011);
+    const float y0 = x00 + c.ty * (x10 - x00), y1 = x01 + c.ty * (x11 - x01);
+    return y0 + c.tz * (y1 - y0);
+}
+
+}  // namespace
+
+float Array3::sample(glm::vec3 p, float& lo, float& hi) const {
+    const Corners c = cornersAt(*this, p);
+    lo = std::min({c.c000, c.c100, c.c010, c.c110, c.c001, c.c101, c.c011, c.c111});
+    hi = std::max({c.c000, c.c100, c.c010, c.c110, c.c001, c.c101, c.c011, c.c111});
+    return blend(c);
+}
+
+// Most samples (back-traces, velocities, the unlimited passes) need no range: they skip it.
 float Array3::sample(glm::vec3 p) const {
-    float lo, hi;
-    return sample(p, lo, hi);
+    return blend(cornersAt(*this, p));
 }
 
 std::optional<glm::ivec3> Array3::firstNonFinite() const {

@@ -5,8 +5,9 @@
 // The unknown is the scaled pressure p' = p·dt/(ρ·h), so that the update is u -= p'_b − p'_a
 // across each face and the system is the 7-point Laplacian A p' = −h·(∇·u). It is solved by
 // conjugate gradients preconditioned with MIC(0) (Bridson, "Fluid Simulation for Computer
-// Graphics", ch. 5), in double precision. The preconditioner's two triangular solves run
-// serially in cell order; every other loop is slab-parallel and every dot product sums fixed
+// Graphics", ch. 5) or by a multigrid V-cycle (the default), in double precision. MIC(0)'s two
+// triangular solves run serially in cell order; every other loop is slab-parallel, the
+// multigrid's sweeps update one colour of cells from the other, and every dot product sums fixed
 // blocks in a fixed order, so the result does not depend on the thread count.
 #include <glm/vec3.hpp>
 
@@ -14,11 +15,17 @@
 
 namespace eikon::sim {
 
+// What approximates A⁻¹ inside conjugate gradients: Bridson's MIC(0) (mic_preconditioner.h,
+// serial triangular solves) or a geometric multigrid V-cycle (multigrid_preconditioner.h,
+// parallel, fewer iterations on large grids).
+enum class PressurePreconditioner { Mic0, Multigrid };
+
 struct PressureSettings {
     // Stop when max |residual| ≤ tolerance · max |h·∇·u| before projecting: the residual is
     // exactly −h·∇·u after the update, so this bounds the divergence left, relative to what was.
     double tolerance = 1e-5;
     int maxIterations = 500;
+    PressurePreconditioner preconditioner = PressurePreconditioner::Multigrid;
 };
 
 struct PressureResult {

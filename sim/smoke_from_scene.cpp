@@ -46,6 +46,7 @@ SmokeSettings smokeSettingsFrom(const SmokeSimulationSpec& spec, double fps) {
     s.maxCfl = spec.cfl;
     s.maxSubsteps = spec.maxSubsteps;
     s.advection = {schemeFrom(spec.advection), limiterFrom(spec.limiter)};
+    s.conserveMass = spec.conserveMass;
     s.forces.buoyancyAlpha = spec.buoyancyAlpha;
     s.forces.buoyancyBeta = spec.buoyancyBeta;
     s.forces.ambientTemperature = spec.ambientTemperature;
@@ -53,6 +54,9 @@ SmokeSettings smokeSettingsFrom(const SmokeSimulationSpec& spec, double fps) {
     s.forces.wind = spec.wind;
     s.pressure.tolerance = spec.pressureTolerance;
     s.pressure.maxIterations = spec.pressureMaxIterations;
+    s.pressure.preconditioner = spec.pressurePreconditioner == SimPreconditioner::Mic0
+                                    ? PressurePreconditioner::Mic0
+                                    : PressurePreconditioner::Multigrid;
     return s;
 }
 

@@ -32,6 +32,8 @@ void SmokeStepStats::add(const SmokeStepStats& o) {
     maxCgIterations = std::max(maxCgIterations, o.maxCgIterations);
     cgResidual = std::max(cgResidual, o.cgResidual);
     cfl = std::max(cfl, o.cfl);
+    if (std::fabs(o.massDeficit) > std::fabs(massDeficit)) massDeficit = o.massDeficit;
+    if (std::fabs(o.massRemainder) > std::fabs(massRemainder)) massRemainder = o.massRemainder;
 }
 
 SmokeSolver::SmokeSolver(const SmokeSettings& settings)
@@ -124,8 +126,22 @@ SmokeStepStats SmokeSolver::step(float dt) {
     stats.cfl = double(grid_.maxSpeed()) * dt / grid_.domain.voxelSize;
 
     Clock::time_point t0 = Clock::now();
+    // The mass the step should keep: what there is, less what the velocity at the start of the
+    // step carries out through open walls (advection uses that velocity too).
+    FieldRange range;
+    double targetMass = 0.0;
+    if (settings_.conserveMass) {
+        range = fluidRange(grid_, grid_.density);
+        targetMass = std::max(
+            0.0, fluidMass(grid_, grid_.density) - openWallOutflow(grid_, grid_.density, dt));
+    }
     advectState(grid_, dt, settings_.advection);
     enforceSolids();
+    if (settings_.conserveMass) {
+        const MassCorrection m = correctMass(grid_, grid_.density, targetMass, range);
+        stats.massDeficit = m.relativeDeficit();
+        stats.massRemainder = m.relativeRemainder();
+    }
     stats.advectionMs = msSince(t0);
     checkFinite("advection");
 

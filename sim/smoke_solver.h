@@ -11,6 +11,7 @@
 #include "sim/advection.h"
 #include "sim/clock.h"
 #include "sim/mac_grid.h"
+#include "sim/mass_correction.h"
 #include "sim/pressure_solver.h"
 #include "sim/smoke_forces.h"
 #include "sim/smoke_shape.h"
@@ -35,6 +36,10 @@ struct SmokeSettings {
     // fast: the frame throws rather than grinding through thousands of steps.
     int maxSubsteps = 64;
     AdvectionSettings advection;
+    // Put back the density advection loses or gains (mass_correction.h), within the range the
+    // density had before the step. Off by default: it changes where smoke is, a little,
+    // everywhere.
+    bool conserveMass = false;
     ForceSettings forces;
     PressureSettings pressure;
 };
@@ -49,6 +54,11 @@ struct SmokeStepStats {
     int maxCgIterations = 0;  // of any one substep
     double cgResidual = 0.0;  // the largest relative residual of any substep
     double cfl = 0.0;         // max speed·dt/h of the substeps
+    // With conserveMass: advection's relative density deficit, (target − advected)/target, and
+    // what the bounds left uncorrected, remainder/target; of the substep where each is largest
+    // in magnitude (signed). Zero when conserveMass is off.
+    double massDeficit = 0.0;
+    double massRemainder = 0.0;
 
     void add(const SmokeStepStats& o);
 };

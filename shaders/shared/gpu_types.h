@@ -39,8 +39,8 @@ EK_NAMESPACE_BEGIN
 // One material: optics per unit of its field's value (see core/scene.h).
 struct GpuMaterial {
     vec4 absorption;  // rgb: per scene unit; w: Henyey–Greenstein g
-    vec4 scattering;  // rgb: per scene unit; w: unused
-    vec4 emission;    // rgb: radiance per scene unit; w: ior
+    vec4 scattering;  // rgb: per scene unit; w: 1/T_ambient for Gladstone–Dale air, else 0
+    vec4 emission;    // rgb: radiance per scene unit; w: n − 1 per unit of the field (ior − 1)
     ivec4 slot;       // x: which field texture the material reads; yzw: unused
 };
 

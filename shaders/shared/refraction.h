@@ -1,8 +1,11 @@
 // Refractive index n and its gradient ∇n (Sun et al. 2008, pipeline stage 2), the same on the GPU
-// and in the CPU twin. Functions only; needs sampling.h (params, fetchVolume, sampleField, ...).
+// and in the CPU twin. Functions only; needs sampling.h (params, fetchVolume, sampleField, ...)
+// and material_index.h (included at file scope before this one).
 //
-// Each material adds (ior − 1) per unit of its field to vacuum's n = 1, so fields that fade out
-// fade to n = 1 and overlapping materials add their excess index.
+// Each material adds materialIndexExcess(f) for its field value f to vacuum's n = 1 (f·(ior − 1)
+// for ordinary materials), so fields that fade out fade to n = 1 and overlapping materials add
+// their excess index. emission.w holds ior − 1 (the
+// slope at f = 0); Gladstone–Dale materials carry 1/T_ambient in scattering.w.
 
 // EK_PRECISE (platform.h) keeps the GLSL compiler from reassociating the sum (Mesa turned
 // f·(ior − 1) + n into a different rounding, 1 ulp off the CPU twin).
@@ -11,7 +14,8 @@ float refractiveIndexAt(vec3 indexPos) {
     EK_PRECISE float n = 1.0f;
     for (int m = 0; m < params.resolution.w; ++m) {
         const float f = sampleField(params.materials[m].slot.x, indexPos);
-        n += f * (params.materials[m].emission.w - 1.0f);
+        n += materialIndexExcess(f, params.materials[m].emission.w,
+                                 params.materials[m].scattering.w);
     }
     return n;
 }
@@ -23,7 +27,8 @@ float refractiveIndexAtVoxel(ivec3 v) {
     EK_PRECISE float n = 1.0f;
     for (int m = 0; m < params.resolution.w; ++m) {
         const float f = fetchVolume(params.materials[m].slot.x, v).x;
-        n += f * (params.materials[m].emission.w - 1.0f);
+        n += materialIndexExcess(f, params.materials[m].emission.w,
+                                 params.materials[m].scattering.w);
     }
     return n;
 }

@@ -157,3 +157,32 @@ TEST_CASE("a negative field that a refracting material reads: n < 1 is an error 
     dense["n"] = resampleToDense(fields.get("n"), v);
     CHECK_NOTHROW(checkRefractiveIndex(scene, fields, dense));
 }
+
+TEST_CASE("Gladstone-Dale air: hot air's n < 1 is meant, a temperature below absolute zero is not",
+          "[resample][bad-input]") {
+    ensureOpenVdbInitialized();
+    Scene scene = sceneReading("temperature");
+    scene.materials[0].name = "hot_air";
+    scene.materials[0].gladstoneDale = 0.5f;
+    scene.materials[0].ambientKelvin = 300.0f;
+    scene.materials[0].ior = 1.0f - 0.5f / 300.0f;
+    const RenderVolume v{{glm::vec3(-1.0f), glm::vec3(1.0f)}, glm::ivec3(20)};
+    FieldRegistry fields;
+    auto check = [&](float excess) {
+        fields.set("temperature",
+                   makeBoxField(glm::vec3(0.0f), glm::vec3(0.5f), excess, 0.0f, 0.1f),
+                   "plume.vdb:temperature");
+        std::map<std::string, DenseGrid> dense{
+            {"temperature", resampleToDense(fields.get("temperature"), v)}};
+        checkRefractiveIndex(scene, fields, dense);
+    };
+    // 600 K above ambient: n = 1 − 0.5·600/900 there, well below 1, and valid.
+    CHECK_NOTHROW(check(600.0f));
+    CHECK_NOTHROW(check(-250.0f));  // cold air, still above absolute zero
+    CHECK_THROWS_WITH(check(-300.0f),
+                      Catch::StartsWith("test.json:/materials/0/field: material 'hot_air' "
+                                        "(gladstone_dale 0.5, ambient_kelvin 300) reads field "
+                                        "'temperature' (from plume.vdb:temperature) as a "
+                                        "temperature excess in kelvin, which is -300 at (0.05, "
+                                        "0.05, 0.05): at or below absolute zero"));
+}

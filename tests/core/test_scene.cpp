@@ -426,7 +426,7 @@ TEST_CASE("out-of-range values name the allowed range", "[scene]") {
 }
 
 TEST_CASE("a gladstone_dale material maps temperature to n below that of ambient air", "[scene]") {
-    SECTION("the linearised index per kelvin, with the default and a given ambient") {
+    SECTION("the index slope and 1/T_ambient, with the default and a given ambient") {
         const eikon::Scene scene = eikon::parseScene(
             R"({"sources": [{"type": "sphere"}], "materials": [
                 {"name": "air", "field": "temperature", "gladstone_dale": 0.00029},
@@ -436,9 +436,13 @@ TEST_CASE("a gladstone_dale material maps temperature to n below that of ambient
         const eikon::MaterialSpec& air = scene.materials[0];
         CHECK(air.gladstoneDale == 0.00029f);
         CHECK(air.ambientKelvin == 288.15f);
-        // n = 1 + θ·(ior − 1): 10 K above ambient lowers n by 10·2.9e-4/288.15.
+        // ior − 1 is the slope at ambient; the exact map also needs 1/T_ambient
+        // (tests/render/test_refraction.cpp checks n against the closed form).
         CHECK(air.ior == Approx(1.0 - 0.00029 / 288.15).epsilon(1e-7));
         CHECK(scene.materials[1].ior == Approx(1.0 - 0.5 / 250.0).epsilon(1e-7));
+        CHECK(air.indexSlope() == Approx(-0.00029 / 288.15).epsilon(1e-6));
+        CHECK(air.inverseAmbient() == Approx(1.0 / 288.15).epsilon(1e-7));
+        CHECK(scene.materials[1].inverseAmbient() == Approx(1.0 / 250.0).epsilon(1e-7));
     }
     SECTION("ior and gladstone_dale together") {
         const Failure f = failureOf(R"({"sources": [{"type": "sphere"}], "materials": [
@@ -713,10 +717,10 @@ const std::string kSimulation = R"("simulation": {
   "resolution": 24,
   "walls": {"+y": "open", "-x": "closed"},
   "cfl": 2, "max_substeps": 16,
-  "advection": "bfecc", "limiter": "clamp",
+  "advection": "bfecc", "limiter": "clamp", "conserve_mass": true,
   "buoyancy_alpha": 0.05, "buoyancy_beta": 2, "ambient_temperature": 1,
   "vorticity": 1.5, "wind": [0.5, 0, 0],
-  "pressure": {"tolerance": 1e-4, "max_iterations": 200},
+  "pressure": {"tolerance": 1e-4, "max_iterations": 200, "preconditioner": "mic0"},
   "sources": [{"type": "sphere", "center": [0, 0.4, 0], "radius": 0.3, "density_rate": 3,
                "temperature_rate": 20, "velocity": [0, 1, 0], "velocity_rate": 10},
               {"type": "box", "min": [-1, 0, -1], "max": [1, 0.1, 1]}],
@@ -754,6 +758,7 @@ TEST_CASE("a simulation section parses into the smoke settings", "[scene][simula
         CHECK(sim.maxSubsteps == 16);
         CHECK(sim.advection == eikon::SimAdvection::Bfecc);
         CHECK(sim.limiter == eikon::SimLimiter::Clamp);
+        CHECK(sim.conserveMass);
         CHECK(sim.buoyancyAlpha == 0.05f);
         CHECK(sim.buoyancyBeta == 2.0f);
         CHECK(sim.ambientTemperature == 1.0f);
@@ -761,6 +766,7 @@ TEST_CASE("a simulation section parses into the smoke settings", "[scene][simula
         CHECK(sim.wind == glm::vec3(0.5f, 0, 0));
         CHECK(sim.pressureTolerance == 1e-4);
         CHECK(sim.pressureMaxIterations == 200);
+        CHECK(sim.pressurePreconditioner == eikon::SimPreconditioner::Mic0);
         REQUIRE(sim.sources.size() == 2);
         CHECK(sim.sources[0].shape.kind == eikon::SimShapeSpec::Kind::Sphere);
         CHECK(sim.sources[0].shape.radius == 0.3f);
@@ -785,6 +791,8 @@ TEST_CASE("a simulation section parses into the smoke settings", "[scene][simula
         CHECK(sim.walls == model.walls);
         CHECK(sim.advection == eikon::SimAdvection::MacCormack);
         CHECK(sim.limiter == eikon::SimLimiter::Revert);
+        CHECK_FALSE(sim.conserveMass);
+        CHECK(sim.pressurePreconditioner == eikon::SimPreconditioner::Multigrid);
         CHECK(sim.sources.empty());
         CHECK(sim.obstacles.empty());
         CHECK(sim.cacheDirectory == "cache");

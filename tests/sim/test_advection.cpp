@@ -30,8 +30,9 @@ TEST_CASE("advection: density drift in a closed swirl is bounded and falls with 
     // swirl at CFL 1. Semi-Lagrangian advection with trilinear sampling is not conservative: each
     // step redistributes the interpolation weights unevenly where the flow strains. Measured here
     // (Release, this commit): semi-Lagrangian −1.9e-2 at 24², −8.8e-3 at 48², first order in h.
-    // The issue asked for 1e-5, which no non-conservative scheme reaches at these resolutions;
-    // these bounds are the measured drift with a margin, and the test checks it converges.
+    // This is the drift without `conserve_mass` (test_mass_correction.cpp holds the corrected
+    // runs to the issue's 1e-5); these bounds are the measured drift with a margin, and the test
+    // checks it converges.
     constexpr double kSemiLagrangianDrift = 3e-2;
     // The second-order schemes' limiters clip the dispersive lobes (Lax–Wendroff-like trailing
     // undershoots), which adds mass: measured up to 8.6e-2 (MacCormack + clamp at 24²).
@@ -148,4 +149,21 @@ TEST_CASE("advection: an unlimited second-order scheme does overshoot a sharp ed
         advectDensity(g, 2.0f / n, {AdvectionScheme::MacCormack, Limiter::None});
     const auto [lo, hi] = std::minmax_element(g.density.values().begin(), g.density.values().end());
     CHECK((*lo < 0.0f || *hi > 1.0f));
+}
+
+TEST_CASE("advection: a uniform field comes out of every scheme bit for bit unchanged",
+          "[smoke][advection]") {
+    // advectState() skips uniform fields (the temperature of a scene without heat sources); this
+    // is what makes that skip exact rather than an approximation.
+    const int n = 24;
+    for (AdvectionScheme scheme : kSchemes)
+        for (Limiter limiter : {Limiter::None, Limiter::Clamp, Limiter::Revert}) {
+            MacGrid g(test::closedBox({n, n, 2}, 1.0f / n));
+            test::setSwirl(g, 1.0f);
+            g.temperature.fill(0.3f);
+            Array3 next;
+            advectField(g, g.temperature, next, 3.0f / n, {scheme, limiter});
+            INFO(schemeName(scheme) << " limiter " << int(limiter));
+            CHECK(next.values() == g.temperature.values());
+        }
 }
