@@ -106,7 +106,13 @@ std::optional<AnimationTarget> lightTarget(const Scene& scene, int i, const std:
     return std::nullopt;
 }
 
-std::optional<AnimationTarget> materialTarget(int m, const std::string& key, std::string& why) {
+std::optional<AnimationTarget> materialTarget(const Scene& scene, int m, const std::string& key,
+                                              std::string& why) {
+    if (key == "ior" && scene.materials[size_t(m)].gladstoneDale > 0.0f) {
+        why = "material '" + scene.materials[size_t(m)].name +
+              "' is hot air (gladstone_dale): its index follows the temperature field";
+        return std::nullopt;
+    }
     if (key == "absorption") return make(TargetKind::MaterialAbsorption, m, 3, 0.0, 1e30);
     if (key == "scattering") return make(TargetKind::MaterialScattering, m, 3, 0.0, 1e30);
     if (key == "emission") return make(TargetKind::MaterialEmission, m, 3, 0.0, 1e30);
@@ -151,7 +157,7 @@ std::optional<AnimationTarget> resolveAnimationTarget(const Scene& scene,
             for (const MaterialSpec& m : scene.materials)
                 if (m.name == mesh.name || m.name == mesh.name + ".n") --own;
         const int i = indexed(own, "materials");
-        return i < 0 ? std::nullopt : materialTarget(i, p[2], why);
+        return i < 0 ? std::nullopt : materialTarget(scene, i, p[2], why);
     }
     if (!p.empty() && p[0] == "camera") {
         if (p.size() != 2) {
