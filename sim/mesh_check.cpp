@@ -212,10 +212,7 @@ std::vector<Problem> findProblems(const MeshReport& r) {
                      " not finite (NaN or infinite)"});
     if (r.boundaryEdges > 0) {
         Problem holes{holesText(r)};
-        if (r.largestSimpleHole > 0)
-            holes.hint = "set close_holes to " + std::to_string(r.largestSimpleHole) +
-                         " to fill holes of up to " + std::to_string(r.largestSimpleHole) +
-                         " edges";
+        holes.hint = closeHolesHint(r);
         p.push_back(holes);
     }
     if (r.complexHoles > 0)
@@ -228,7 +225,7 @@ std::vector<Problem> findProblems(const MeshReport& r) {
                      " (used by more than two faces)"});
     if (r.nonManifoldVertices > 0)
         p.push_back({plural(r.nonManifoldVertices, "non-manifold vertex", "non-manifold vertices") +
-                     " (faces around it form more than one fan)"});
+                     " (the faces around each form more than one fan)"});
     if (r.inconsistentEdges > 0)
         p.push_back(
             {"inconsistent winding: " + plural(r.inconsistentEdges, "edge is", "edges are") +
@@ -249,6 +246,12 @@ std::vector<Problem> findProblems(const MeshReport& r) {
 }
 
 }  // namespace
+
+std::string closeHolesHint(const MeshReport& r) {
+    if (r.largestSimpleHole == 0) return {};
+    const std::string n = std::to_string(r.largestSimpleHole);
+    return "set close_holes to " + n + " to fill holes of up to " + n + " edges";
+}
 
 std::vector<std::string> meshProblems(const MeshReport& report) {
     std::vector<std::string> texts;

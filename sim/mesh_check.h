@@ -52,6 +52,10 @@ MeshReport checkMesh(const LoadedMesh& loaded);  // counts the file's polygons a
 // 96 edges)"); empty for a clean closed mesh. Unreferenced vertices are no problem.
 std::vector<std::string> meshProblems(const MeshReport& report);
 
+// "set close_holes to N to fill holes of up to N edges" where some holes are simple loops that
+// close_holes could fill; empty otherwise.
+std::string closeHolesHint(const MeshReport& report);
+
 // Throws eikon::Error(where, ...) listing every problem that stops the mesh from being a closed
 // refractive object: no triangles, non-finite vertices, holes (with the close_holes setting that
 // would fill them), non-manifold edges or vertices, inconsistent or inward winding, absurd scale.

@@ -190,7 +190,7 @@ TEST_CASE("two cubes sharing an edge or a corner are non-manifold", "[mesh_check
     CHECK(corner.nonManifoldVertices == 1);
     CHECK(corner.watertight());  // every edge has two faces; the corner is still not a surface
     CHECK(refractiveError(corner) ==
-          "1 non-manifold vertex (faces around it form more than one fan)");
+          "1 non-manifold vertex (the faces around each form more than one fan)");
 }
 
 TEST_CASE("empty and NaN meshes cannot be refractive objects", "[mesh_check]") {
