@@ -9,6 +9,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     bench->require_subcommand(1);
     addBenchSmokeCommand(*bench, exitCode);
     addBenchAdvectionCommand(*bench, exitCode);
+    addBenchArapCommand(*bench, exitCode);
 }
 
 }  // namespace eikon::app
