@@ -38,6 +38,10 @@ inline PolygonMesh unitCubeTriangles() {
     return m;
 }
 
+inline bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
 inline std::string readText(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -58,16 +62,22 @@ inline void writeObj(const std::string& path, const PolygonMesh& m) {
     writeText(path, out.str());
 }
 
-inline void writeOff(const std::string& path, const PolygonMesh& m) {
+// Vertex lines "x y z", then face lines "n i j k …": the body of ASCII OFF and PLY alike.
+inline std::string countedPolygons(const PolygonMesh& m) {
     std::ostringstream out;
-    out << "OFF\n" << m.positions.size() << ' ' << m.faces.size() << " 0\n";
     for (const glm::vec3& p : m.positions) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
     for (const std::vector<int>& f : m.faces) {
         out << f.size();
         for (int v : f) out << ' ' << v;
         out << '\n';
     }
-    writeText(path, out.str());
+    return out.str();
+}
+
+inline void writeOff(const std::string& path, const PolygonMesh& m) {
+    std::ostringstream out;
+    out << "OFF\n" << m.positions.size() << ' ' << m.faces.size() << " 0\n";
+    writeText(path, out.str() + countedPolygons(m));
 }
 
 inline std::string plyHeader(const PolygonMesh& m, const std::string& format) {
@@ -79,15 +89,7 @@ inline std::string plyHeader(const PolygonMesh& m, const std::string& format) {
 }
 
 inline void writePlyAscii(const std::string& path, const PolygonMesh& m) {
-    std::ostringstream out;
-    out << plyHeader(m, "ascii");
-    for (const glm::vec3& p : m.positions) out << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    for (const std::vector<int>& f : m.faces) {
-        out << f.size();
-        for (int v : f) out << ' ' << v;
-        out << '\n';
-    }
-    writeText(path, out.str());
+    writeText(path, plyHeader(m, "ascii") + countedPolygons(m));
 }
 
 template <typename T>

@@ -10,19 +10,12 @@
 #include "support/run_eikon.h"
 #include "support/test_paths.h"
 
+using eikon::test::contains;
 using eikon::test::quoted;
 using eikon::test::runEikon;
 using eikon::test::RunResult;
 using eikon::test::scratchDir;
 using eikon::test::sharedData;
-
-namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
-}  // namespace
 
 TEST_CASE("eikon info prints a mesh's counts, bounds and problems", "[cli]") {
     const std::string dir = scratchDir("cli_mesh_info");

@@ -20,6 +20,7 @@ using eikon::checkMesh;
 using eikon::MeshReport;
 using eikon::requireClosedRefractiveMesh;
 using eikon::TriangleMesh;
+using eikon::test::contains;
 using eikon::test::sharedData;
 
 namespace {
@@ -74,10 +75,6 @@ std::string refractiveError(const MeshReport& report) {
     }
     FAIL("requireClosedRefractiveMesh did not throw");
     return {};
-}
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
 }
 
 }  // namespace

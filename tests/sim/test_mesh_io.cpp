@@ -32,10 +32,6 @@ std::string loadError(const std::string& path) {
     return {};
 }
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
 void checkIsUnitCube(const LoadedMesh& loaded, std::size_t vertices, std::size_t faces) {
     CHECK(loaded.mesh.positions.size() == vertices);
     CHECK(loaded.faces == faces);
