@@ -41,13 +41,27 @@ void checkPlyHeader(const std::string& path, const std::string& bytes) {
         throw Error(path, "the PLY header never ends (no 'end_header'): truncated or corrupt");
 }
 
+namespace {
+
+std::uint32_t declaredStlTriangles(const std::string& bytes) {
+    std::uint32_t triangles = 0;
+    if (bytes.size() >= 84) std::memcpy(&triangles, bytes.data() + 80, 4);  // little-endian host
+    return triangles;
+}
+
+}  // namespace
+
+bool isAsciiStl(const std::string& bytes) {
+    const bool binarySize =
+        bytes.size() >= 84 && 84 + 50 * std::uint64_t(declaredStlTriangles(bytes)) == bytes.size();
+    return bytes.compare(0, 5, "solid") == 0 && !binarySize;
+}
+
 void checkBinaryStl(const std::string& path, const std::string& bytes) {
-    if (bytes.compare(0, 5, "solid") == 0) return;  // ASCII STL: checkVertexLines
     if (bytes.size() < 84)
         throw Error(path, "too short for a binary STL (" + std::to_string(bytes.size()) +
                               " bytes; the header alone is 84)");
-    std::uint32_t triangles = 0;
-    std::memcpy(&triangles, bytes.data() + 80, 4);  // little-endian, as is every host we build on
+    const std::uint32_t triangles = declaredStlTriangles(bytes);
     const std::uint64_t expected = 84 + 50 * std::uint64_t(triangles);
     if (expected != bytes.size())
         throw Error(path, "binary STL declares " + std::to_string(triangles) + " triangles (" +

@@ -21,9 +21,13 @@ namespace eikon {
 // Before reading: the file starts with `ply` and its header ends (`end_header`).
 void checkPlyHeader(const std::string& path, const std::string& bytes);
 
-// Before reading, for an STL that is not ASCII (`solid` first): the size is exactly the 84-byte
-// header plus 50 bytes per triangle it declares, and every corner is finite (OpenMesh welds
-// corners in an ordered map, which a NaN would corrupt).
+// Whether an STL file is ASCII: it starts with `solid` and is not exactly the size of a binary STL
+// (some exporters start the 80-byte header of a binary STL with `solid` too).
+bool isAsciiStl(const std::string& bytes);
+
+// Before reading a binary STL: the size is exactly the 84-byte header plus 50 bytes per triangle
+// it declares, and every corner is finite (OpenMesh welds corners in an ordered map, which a NaN
+// would corrupt).
 void checkBinaryStl(const std::string& path, const std::string& bytes);
 
 // Every line that starts with `keyword` (`v` in OBJ, `vertex` in ASCII STL) holds three finite

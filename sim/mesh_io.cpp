@@ -96,8 +96,10 @@ LoadedMesh loadMesh(const std::string& path) {
     if (bytes.empty()) throw Error(path, "empty file");
     if (ext == ".ply") checkPlyHeader(path, bytes);
     if (ext == ".stl") {
-        checkBinaryStl(path, bytes);
-        if (bytes.compare(0, 5, "solid") == 0) checkVertexLines(path, bytes, "vertex");
+        if (isAsciiStl(bytes))
+            checkVertexLines(path, bytes, "vertex");
+        else
+            checkBinaryStl(path, bytes);
     }
 
     OpenMeshFaceRecorder read;

@@ -53,6 +53,8 @@ TEST_CASE("every mesh format reads the same cube, polygons fan-triangulated", "[
     writeText(dir + "/cube_binary.PLY", plyBinaryBytes(quads));  // extensions in any case
     writeStlAscii(dir + "/cube.stl", triangles);
     writeText(dir + "/cube_binary.stl", stlBinaryBytes(triangles));
+    // Some exporters start a binary STL's header with "solid", as if it were ASCII.
+    writeText(dir + "/cube_solid_binary.stl", "solid" + stlBinaryBytes(triangles).substr(5));
     checkIsUnitCube(loadMesh(dir + "/cube.obj"), 8, 6);
     checkIsUnitCube(loadMesh(dir + "/cube.off"), 8, 6);
     checkIsUnitCube(loadMesh(dir + "/cube.ply"), 8, 6);
@@ -60,6 +62,7 @@ TEST_CASE("every mesh format reads the same cube, polygons fan-triangulated", "[
     // STL stores corners, not indices; OpenMesh's reader welds equal positions.
     checkIsUnitCube(loadMesh(dir + "/cube.stl"), 8, 12);
     checkIsUnitCube(loadMesh(dir + "/cube_binary.stl"), 8, 12);
+    checkIsUnitCube(loadMesh(dir + "/cube_solid_binary.stl"), 8, 12);
 }
 
 TEST_CASE("the shared meshes load with SOURCES.md's vertex and triangle counts", "[mesh_io]") {
