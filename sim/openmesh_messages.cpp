@@ -3,35 +3,21 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
-#include <iostream>
 
 namespace eikon {
 
-OpenMeshMessages::OpenMeshMessages() {
-    hadCerr_ = omerr().disconnect(std::cerr);
-    hadClog_ = omlog().disconnect(std::clog);
-    hadCout_ = omout().disconnect(std::cout);
-    omerr().connect(buffer_);
-    omlog().connect(buffer_);
-    omout().connect(buffer_);
-}
+OpenMeshMessages::OpenMeshMessages()
+    : savedErr_(omerr().rdbuf(&buffer_)),
+      savedLog_(omlog().rdbuf(&buffer_)),
+      savedOut_(omout().rdbuf(&buffer_)) {}
 
 OpenMeshMessages::~OpenMeshMessages() {
-    omerr().flush();
-    omlog().flush();
-    omout().flush();
-    omerr().disconnect(buffer_);
-    omlog().disconnect(buffer_);
-    omout().disconnect(buffer_);
-    if (hadCerr_) omerr().connect(std::cerr);
-    if (hadClog_) omlog().connect(std::clog);
-    if (hadCout_) omout().connect(std::cout);
+    omerr().rdbuf(savedErr_);
+    omlog().rdbuf(savedLog_);
+    omout().rdbuf(savedOut_);
 }
 
 std::vector<std::string> OpenMeshMessages::lines() const {
-    omerr().flush();
-    omlog().flush();
-    omout().flush();
     std::vector<std::string> out;
     std::istringstream in(buffer_.str());
     for (std::string line; std::getline(in, line);) {
