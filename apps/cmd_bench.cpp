@@ -10,6 +10,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     addBenchSmokeCommand(*bench, exitCode);
     addBenchAdvectionCommand(*bench, exitCode);
     addBenchVoxelizeCommand(*bench, exitCode);
+    addBenchArapCommand(*bench, exitCode);
 }
 
 }  // namespace eikon::app

@@ -3,15 +3,25 @@
 
 #include "apps/commands.h"
 #include "core/vdb_info.h"
+#include "sim/mesh_check.h"
+#include "sim/mesh_info.h"
+#include "sim/mesh_io.h"
 
 namespace eikon::app {
 
 void addInfoCommand(CLI::App& app, int& exitCode) {
-    auto* cmd = app.add_subcommand("info", "Print the grids of a VDB file");
+    auto* cmd = app.add_subcommand(
+        "info", "Print the grids of a VDB file, or the counts, bounds and problems of a mesh");
     auto path = std::make_shared<std::string>();  // CLI11 binds by reference
-    cmd->add_option("file", *path, "VDB file")->required();
+    cmd->add_option("file", *path, "VDB file, or mesh (.obj, .off, .ply, .stl)")->required();
     cmd->callback([path, &exitCode] {
-        std::fputs(formatVdbInfo(inspectVdb(*path)).c_str(), stdout);
+        // Chosen by extension: a mesh problem is reported, not an error; an unreadable file is.
+        if (isMeshFile(*path)) {
+            const LoadedMesh loaded = loadMesh(*path);
+            std::fputs(formatMeshInfo(*path, loaded, checkMesh(loaded)).c_str(), stdout);
+        } else {
+            std::fputs(formatVdbInfo(inspectVdb(*path)).c_str(), stdout);
+        }
         exitCode = 0;
     });
 }

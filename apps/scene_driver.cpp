@@ -2,6 +2,7 @@
 
 #include "core/mesh_placement.h"
 #include "sim/jelly_from_scene.h"
+#include "sim/refractive_mesh.h"
 #include "sim/water_from_scene.h"
 
 namespace eikon::app {
@@ -9,6 +10,12 @@ namespace eikon::app {
 SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.time.fps, 1.0) {
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const MeshObjectSpec& spec = scene.meshes[m];
+        TriangleMesh local = meshShape(spec);
+        if (spec.shape == MeshShapeType::File) {
+            RefractiveMeshOptions options;
+            options.closeHolesUpTo = std::size_t(spec.closeHolesUpTo);
+            local = loadRefractiveMesh(spec.file, options).mesh;
+        }
         if (spec.shape == MeshShapeType::Water) {
             Simulated s{m, std::make_unique<sim::WaterSurface>(
                                sim::waterSettingsFor(spec.water, scene.time.fps)),
@@ -16,16 +23,22 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
             simulated_.push_back(std::move(s));
         } else if (spec.jelly) {
             // The jelly lives in the world, starting where the mesh is placed.
-            const TriangleMesh world = placeMesh(meshShape(spec), spec);
+            const TriangleMesh world = placeMesh(local, spec);
             Simulated s{m, nullptr,
                         std::make_unique<sim::Jelly>(
                             world, sim::jellySettingsFor(*spec.jelly, scene.time.fps))};
             simulated_.push_back(std::move(s));
+        } else if (spec.shape == MeshShapeType::File) {
+            fileMeshes_.emplace_back(m, std::move(local));
         }
     }
 }
 
 void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
+    if (!fileMeshesSet_) {
+        for (const auto& [m, mesh] : fileMeshes_) renderer.setMesh(m, mesh);
+        fileMeshesSet_ = true;
+    }
     if (!animation_.empty()) animation_.apply(clock_.timeOfFrame(frame), renderer.scene());
     for (Simulated& s : simulated_) {
         if (s.frameSet == frame) continue;

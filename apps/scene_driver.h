@@ -3,8 +3,10 @@
 // render` and `eikon view` show the same state at the same frame: the scene's keyframe tracks
 // evaluated at the frame's time on the one clock (sim/clock.h, the scene's fps), and every
 // simulated mesh (water surfaces, jellies) stepped to that frame from its start at frame 0, so a
-// frame is the same however it is reached.
+// frame is the same however it is reached. Mesh files are read once, here (sim/refractive_mesh.h:
+// holes closed as the scene asks, then checked closed), since the renderer cannot read them.
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "render/frame_renderer.h"
@@ -34,6 +36,9 @@ private:
         int frameSet = -1;  // the frame whose mesh the renderer has
     };
     std::vector<Simulated> simulated_;
+    // Meshes read from files that no simulation moves: handed to the renderer once.
+    std::vector<std::pair<size_t, TriangleMesh>> fileMeshes_;
+    bool fileMeshesSet_ = false;
 };
 
 }  // namespace eikon::app

@@ -1,0 +1,46 @@
+#pragma once
+// Checks on a mesh file's raw bytes, for the damage OpenMesh's readers do not report. Each throws
+// eikon::Error naming the file (and line, where there is one) and saying what is wrong.
+//
+// Measured on OpenMesh 9.0 (Debian 12):
+// - a PLY whose header never reaches `end_header` sends the PLY reader into an endless loop;
+// - a binary STL cut short reads as a mesh with fewer (or no) triangles and no error;
+// - a NaN corner in a binary STL goes into the ordered map that welds corners, whose ordering it
+//   breaks;
+// - an OBJ `v` line it cannot parse (`v nan 0 0`, `v 1e400 0 0`, `v x 0 0`) is skipped without a
+//   word, which shifts every later vertex index onto the wrong vertex; in an ASCII STL such a
+//   corner ends the reading early, leaving a mesh with no faces and no error;
+// - an ASCII OFF file cut short reads its last number again and again, giving a full set of
+//   garbage faces and no error.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace eikon {
+
+// Before reading: the file starts with `ply` and its header ends (`end_header`).
+void checkPlyHeader(const std::string& path, const std::string& bytes);
+
+// Whether an STL file is ASCII: it starts with `solid` and is not exactly the size of a binary STL
+// (some exporters start the 80-byte header of a binary STL with `solid` too).
+bool isAsciiStl(const std::string& bytes);
+
+// Before reading a binary STL: the size is exactly the 84-byte header plus 50 bytes per triangle
+// it declares, and every corner is finite (OpenMesh welds corners in an ordered map, which a NaN
+// would corrupt).
+void checkBinaryStl(const std::string& path, const std::string& bytes);
+
+// Every line that starts with `keyword` (`v` in OBJ, `vertex` in ASCII STL) holds three finite
+// numbers after it; returns how many such lines there are.
+std::size_t checkVertexLines(const std::string& path, const std::string& bytes,
+                             const std::string& keyword);
+
+// After reading an OBJ: its `v` lines are sound and OpenMesh read as many vertices.
+void checkObjVertices(const std::string& path, const std::string& bytes, std::size_t verticesRead);
+
+// After reading an ASCII OFF: the file holds at least the numbers that the vertices and faces
+// OpenMesh returned need (three per vertex, one count plus the indices per face).
+void checkOffLength(const std::string& path, const std::string& bytes, std::size_t verticesRead,
+                    const std::vector<std::vector<int>>& facesRead);
+
+}  // namespace eikon
