@@ -87,9 +87,9 @@ int runRender(const RenderOptions& o) {
     fs::create_directories(scene.output.directory, ec);
     if (ec) throw Error(scene.output.directory, "cannot create the output folder: " + ec.message());
 
+    SceneDriver driver(scene);  // reads the mesh files: a bad one fails before anything else
     BackendChoice choice = chooseBackend(o.backend);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());
-    SceneDriver driver(scene);
     std::printf("%s\n", choice.description.c_str());
     const bool softwareGl =
         renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());

@@ -279,3 +279,38 @@ TEST_CASE("eikon render steps a jelly mesh on the scene's clock", "[cli][jelly]"
     REQUIRE(alone.exitCode == 0);
     CHECK(readFile(dir + "/b/blob_0003.png") == readFile(dir + "/a/blob_0003.png"));
 }
+
+TEST_CASE("eikon render reads mesh files: closed ones render, open ones fail until closed",
+          "[cli][meshes]") {
+    const std::string dir = scratchDir("cli_render_mesh_file");
+    // Shared data paths hold no quotes or backslashes, so they go into JSON as they are.
+    auto sceneWith = [&](const std::string& mesh, const std::string& extra) {
+        const std::string path = dir + "/scene.json";
+        writeFile(path, R"({
+  "meshes": [{"name": "bunny", "file": ")" + sharedData("meshes/" + mesh) +
+                            R"(", "ior": 1.5, "absorption": [1, 2, 3], "scale": 10)" + extra +
+                            R"(}],
+  "volume": {"resolution": 24},
+  "environment": {"color": [0.5, 0.6, 0.8]},
+  "render": {"width": 24, "height": 16},
+  "output": {"name": "bunny", "png": true}
+})");
+        return quoted(path);
+    };
+    const RunResult closed =
+        runEikon("render " + sceneWith("bunny_closed.obj", "") + " -o " + quoted(dir + "/a"), dir);
+    INFO("stdout:\n" << closed.out << "stderr:\n" << closed.err);
+    CHECK(closed.exitCode == 0);
+    CHECK(fs::exists(dir + "/a/bunny_0000.png"));
+    const RunResult open =
+        runEikon("render " + sceneWith("stanford-bunny.obj", "") + " -o " + quoted(dir + "/b"), dir);
+    checkOneLineError(open, fs::path(sharedData("meshes/stanford-bunny.obj")).lexically_normal().string());
+    CHECK(contains(open.err, "not watertight"));
+    CHECK_FALSE(fs::exists(dir + "/b/bunny_0000.png"));
+    const RunResult filled = runEikon(
+        "render " + sceneWith("stanford-bunny.obj", R"(, "close_holes": 80)") + " -o " +
+            quoted(dir + "/c"),
+        dir);
+    INFO("stdout:\n" << filled.out << "stderr:\n" << filled.err);
+    CHECK(filled.exitCode == 0);
+}
