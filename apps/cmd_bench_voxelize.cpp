@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -19,6 +20,7 @@
 #include "core/mesh_primitives.h"
 #include "render/gl_context.h"
 #include "render/voxelize.h"
+#include "sim/refractive_mesh.h"
 
 namespace eikon::app {
 namespace {
@@ -38,10 +40,24 @@ struct BenchVoxelizeOptions {
 struct NamedMesh {
     std::string name;
     TriangleMesh mesh;
+    bool sphere = true;  // a unit sphere: its error against 4/3 π is printed too
 };
 
-// "ico:L" (icosphere, L subdivisions) or "uv:SxT" (slices × stacks), unit radius at the origin.
+// A mesh file scaled and centred so that its bounding box's longest side is 2, like the spheres'
+// diameter, so that it spans the same voxels.
+NamedMesh fileMesh(const std::string& path) {
+    TriangleMesh mesh = loadRefractiveMesh(path, {}).mesh;
+    const Bounds3 b = boundsOf(mesh);
+    const glm::vec3 size = b.size();
+    const float scale = 2.0f / std::max({size.x, size.y, size.z});
+    for (glm::vec3& p : mesh.positions) p = (p - b.center()) * scale;
+    return {std::filesystem::path(path).filename().string(), std::move(mesh), false};
+}
+
+// "ico:L" (icosphere, L subdivisions) or "uv:SxT" (slices × stacks), unit radius at the origin,
+// or "file:PATH" (a closed mesh file, scaled to the same span).
 NamedMesh parseMesh(const std::string& spec) {
+    if (spec.rfind("file:", 0) == 0) return fileMesh(spec.substr(5));
     int a = 0, b = 0;
     char x = 0;
     std::istringstream in(spec.substr(std::min<size_t>(spec.size(), spec.find(':') + 1)));
@@ -51,7 +67,8 @@ NamedMesh parseMesh(const std::string& spec) {
         b >= 2)
         return {"uvsphere(" + std::to_string(a) + "x" + std::to_string(b) + ")",
                 uvSphere(glm::vec3(0.0f), 1.0f, a, b)};
-    throw Error("--meshes", "unknown mesh '" + spec + "' (expected ico:L or uv:SLICESxSTACKS)");
+    throw Error("--meshes",
+                "unknown mesh '" + spec + "' (expected ico:L, uv:SLICESxSTACKS or file:PATH)");
 }
 
 std::vector<std::string> splitList(const std::string& text) {
@@ -141,10 +158,13 @@ int runBenchVoxelize(BenchVoxelizeOptions o) {
         auto report = [&](const char* backend, const std::vector<double>& vox,
                           const std::vector<double>& blur, const std::vector<float>& coverage) {
             const double v = volumeOf(coverage, volume);
-            std::printf("%-20s %9zu %-8s | %12.2f %12.2f %9.2f | %11.4f%% %11.4f%%\n",
-                        m.name.c_str(), m.mesh.triangles.size(), backend, median(vox),
-                        *std::min_element(vox.begin(), vox.end()), median(blur),
-                        100.0 * (v - 4.0 / 3.0 * kPi) / (4.0 / 3.0 * kPi),
+            char sphereError[32] = "           -";
+            if (m.sphere)
+                std::snprintf(sphereError, sizeof sphereError, "%11.4f%%",
+                              100.0 * (v - 4.0 / 3.0 * kPi) / (4.0 / 3.0 * kPi));
+            std::printf("%-20s %9zu %-8s | %12.2f %12.2f %9.2f | %s %11.4f%%\n", m.name.c_str(),
+                        m.mesh.triangles.size(), backend, median(vox),
+                        *std::min_element(vox.begin(), vox.end()), median(blur), sphereError,
                         100.0 * (v - poly) / poly);
             std::fflush(stdout);
         };
@@ -181,8 +201,8 @@ void addBenchVoxelizeCommand(CLI::App& bench, int& exitCode) {
     auto* cmd = bench.add_subcommand("voxelize", "ms and volume error of mesh voxelization");
     auto o = std::make_shared<BenchVoxelizeOptions>();
     cmd->add_option("--meshes", o->meshes,
-                    "comma-separated ico:L and uv:SLICESxSTACKS (default: the peer's, plus "
-                    "uv:200x101 for 40k triangles)");
+                    "comma-separated ico:L, uv:SLICESxSTACKS and file:PATH (default: the peer's, "
+                    "plus uv:200x101 for 40k triangles)");
     cmd->add_option("--resolution", o->resolution, "voxels per axis (default 128)");
     cmd->add_option("--span", o->span, "the sphere's diameter in voxels (default 103)");
     cmd->add_option("--reps", o->reps, "runs per measurement; the median is printed (default 5)");
