@@ -1,9 +1,7 @@
 #include "apps/scene_driver.h"
 
 #include "core/mesh_placement.h"
-#include "sim/jelly_from_scene.h"
 #include "sim/refractive_mesh.h"
-#include "sim/water_from_scene.h"
 
 namespace eikon::app {
 
@@ -18,7 +16,7 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
         }
         if (spec.shape == MeshShapeType::Water) {
             Simulated s{m, std::make_unique<sim::WaterSurface>(
-                               sim::waterSettingsFor(spec.water, scene.time.fps)),
+                               sim::waterSettings(spec.water, scene.time.fps)),
                         nullptr};
             simulated_.push_back(std::move(s));
         } else if (spec.jelly) {
@@ -26,7 +24,7 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
             const TriangleMesh world = placeMesh(local, spec);
             Simulated s{m, nullptr,
                         std::make_unique<sim::Jelly>(
-                            world, sim::jellySettingsFor(*spec.jelly, scene.time.fps))};
+                            world, sim::jellySettings(*spec.jelly, scene.time.fps))};
             simulated_.push_back(std::move(s));
         } else if (spec.shape == MeshShapeType::File) {
             fileMeshes_.emplace_back(m, std::move(local));

@@ -115,19 +115,19 @@ enum class MeshShapeType { File, Icosphere, Box, Water };
 // A pool of water whose surface follows the damped wave equation (sim/water_surface.h), stepped
 // on the scene's clock; droplets dent it at given times.
 struct WaterDropletSpec {
-    double time = 0.0;
+    double time = 0.0;         // seconds
     glm::vec2 position{0.0f};  // (x, z) in the pool's object space
-    float radius = 0.05f;
-    float depth = 0.02f;
+    float radius = 0.05f;      // σ of the Gaussian dent, scene units
+    float depth = 0.02f;       // how far the dent lowers the surface at its centre
 };
 
 struct WaterSpec {
     glm::vec2 size{2.0f, 2.0f};  // x and z extent, centred on the object's origin
-    glm::ivec2 cells{64, 64};
-    float depth = 0.3f;  // rest surface above the bottom (y = 0)
-    float waveSpeed = 1.0f;
-    float damping = 0.0f;
-    std::vector<WaterDropletSpec> droplets;
+    glm::ivec2 cells{64, 64};    // nx, nz
+    float depth = 0.3f;          // rest surface above the bottom (y = 0)
+    float waveSpeed = 1.0f;      // c, scene units per second
+    float damping = 0.0f;        // γ, per second
+    std::vector<WaterDropletSpec> droplets;  // in any order
 };
 
 // A jelly deformer on a mesh (sim/jelly.h): a mass-spring body that keeps its volume, under
@@ -135,19 +135,20 @@ struct WaterSpec {
 struct JellyPokeSpec {
     double time = 0.0;
     glm::vec3 position{0.0f};  // world space
-    float radius = 0.1f;
-    glm::vec3 velocity{0.0f};
+    float radius = 0.1f;       // vertices within this distance get the velocity, falling off
+    glm::vec3 velocity{0.0f};  // added at the poke's centre (scene units per second)
 };
 
 struct JellySpec {
-    float mass = 1.0f;
-    float stiffness = 150.0f;
-    float bendStiffness = 40.0f;
-    float volumeStiffness = 300.0f;
-    float damping = 0.0f;
+    float mass = 1.0f;               // the whole body's, spread evenly over the vertices
+    float stiffness = 150.0f;        // edge springs: force per unit strain (k = this / length)
+    float bendStiffness = 40.0f;     // springs across adjacent triangles
+    float volumeStiffness = 300.0f;  // k_v
+    float damping = 0.0f;            // velocity damping per second (0: none)
     glm::vec3 gravity{0.0f, -9.81f, 0.0f};
     std::optional<float> floorY;  // none: no floor
-    float friction = 5.0f;
+    float friction = 5.0f;        // per second, on the tangential velocity in contact
+    // At least this many steps per frame; more when the springs' highest frequency needs them.
     int substeps = 40;
     std::vector<JellyPokeSpec> pokes;
 };

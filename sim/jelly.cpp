@@ -103,10 +103,10 @@ void Jelly::step(double dt) {
     for (size_t i = 0; i < x.size(); ++i) {
         velocity_[i] += 0.5f * h / particleMass_ * f[i];
         x[i] += h * velocity_[i];
-        if (s.floor && x[i].y < s.floorY) {
+        if (s.floorY && x[i].y < *s.floorY) {
             // Contact: the vertex is put back on the floor and loses its velocity into it
             // (inelastic), and friction drags its sliding.
-            x[i].y = s.floorY;
+            x[i].y = *s.floorY;
             velocity_[i].y = std::max(velocity_[i].y, 0.0f);
             const float drag = std::exp(-s.friction * h);
             velocity_[i].x *= drag;
@@ -118,7 +118,7 @@ void Jelly::step(double dt) {
     for (size_t i = 0; i < x.size(); ++i) {
         velocity_[i] += 0.5f * h / particleMass_ * f[i];
         velocity_[i] *= keep;
-        if (s.floor && x[i].y <= s.floorY) velocity_[i].y = std::max(velocity_[i].y, 0.0f);
+        if (s.floorY && x[i].y <= *s.floorY) velocity_[i].y = std::max(velocity_[i].y, 0.0f);
     }
 }
 

@@ -5,7 +5,7 @@
 // potential ½·k_v·V₀·(V/V₀ − 1)² keeps the enclosed volume, so the body wobbles instead of
 // collapsing. Forces derive from potentials (springs, volume, gravity), integrated by velocity
 // Verlet (symplectic): with no damping and no floor the total energy oscillates about its start
-// and does not drift. A floor (a plane y = floorY) is a hard constraint: a vertex that crosses it
+// and does not drift. A floor (the plane y = floorY, when set) is a hard constraint: a vertex that crosses it
 // is put back on it, loses its velocity into it (an inelastic contact) and is slowed by friction,
 // so nothing passes through; pokes add velocity to the vertices near a point. A dropped jelly
 // lands, wobbles and comes to rest on the floor.
@@ -13,33 +13,25 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/scene.h"
 #include "core/triangle_mesh.h"
 
 namespace eikon::sim {
 
-struct Poke {
-    double time = 0.0;
-    glm::vec3 position{0.0f};  // world space
-    float radius = 0.1f;       // vertices within this distance get the velocity, falling off
-    glm::vec3 velocity{0.0f};  // added at the poke's centre (scene units per second)
+// The body as the scene gives it (core/scene.h JellySpec: mass, stiffnesses, damping, gravity,
+// floor, friction, fewest substeps, pokes), and the rate of the clock that steps it.
+using Poke = JellyPokeSpec;
+
+struct JellySettings : JellySpec {
+    double fps = 24.0;
 };
 
-struct JellySettings {
-    float mass = 1.0f;              // the whole body's, spread evenly over the vertices
-    float stiffness = 150.0f;       // edge springs: force per unit strain (k = stiffness / rest length)
-    float bendStiffness = 40.0f;    // springs across adjacent triangles
-    float volumeStiffness = 300.0f; // k_v
-    float damping = 0.0f;           // velocity damping per second (0: none)
-    glm::vec3 gravity{0.0f, -9.81f, 0.0f};
-    bool floor = true;
-    float floorY = 0.0f;
-    float friction = 5.0f;  // per second, on the tangential velocity in contact
-    double fps = 24.0;
-    // At least this many steps per frame; more when the springs' highest frequency needs them
-    // (velocity Verlet is explicit: substepsPerFrame() says how many it takes).
-    int substeps = 40;
-    std::vector<Poke> pokes;
-};
+inline JellySettings jellySettings(const JellySpec& body, double fps) {
+    JellySettings s;
+    static_cast<JellySpec&>(s) = body;
+    s.fps = fps;
+    return s;
+}
 
 class Jelly {
 public:

@@ -14,26 +14,25 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/scene.h"
 #include "core/triangle_mesh.h"
 
 namespace eikon::sim {
 
-struct Droplet {
-    double time = 0.0;        // seconds
-    glm::vec2 position{0.0f};  // (x, z) in the pool's object space
-    float radius = 0.05f;     // σ of the Gaussian dent, scene units
-    float depth = 0.02f;      // how far the dent lowers the surface at its centre
+// The pool as the scene gives it (core/scene.h WaterSpec: size, cells, depth, wave speed,
+// damping, droplets), and the rate of the clock that steps it.
+using Droplet = WaterDropletSpec;
+
+struct WaterSettings : WaterSpec {
+    double fps = 24.0;
 };
 
-struct WaterSettings {
-    glm::ivec2 cells{64, 64};  // nx, nz
-    glm::vec2 size{2.0f, 2.0f};
-    float depth = 0.3f;
-    float waveSpeed = 1.0f;  // c, scene units per second
-    float damping = 0.0f;    // γ, per second
-    double fps = 24.0;
-    std::vector<Droplet> droplets;  // in any order
-};
+inline WaterSettings waterSettings(const WaterSpec& pool, double fps) {
+    WaterSettings s;
+    static_cast<WaterSpec&>(s) = pool;
+    s.fps = fps;
+    return s;
+}
 
 class WaterSurface {
 public:
