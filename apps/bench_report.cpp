@@ -1,5 +1,6 @@
 #include "apps/bench_report.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -109,6 +110,13 @@ std::vector<int> parseSizeList(const std::string& text, const char* option) {
     }
     if (values.empty()) throw Error(option, "expected at least one value");
     return values;
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t m = values.size() / 2;
+    return values.size() % 2 ? values[m] : 0.5 * (values[m - 1] + values[m]);
 }
 
 }  // namespace eikon::app

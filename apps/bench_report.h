@@ -22,6 +22,9 @@ void printBenchHeader(std::FILE* out, int threads);
 // Caps TBB's threads for the lifetime of the returned object (threads ≤ 0: no cap).
 std::unique_ptr<tbb::global_control> limitThreads(int threads);
 
+// The median of the values (the mean of the middle two for an even count); 0 for none.
+double median(std::vector<double> values);
+
 // "16,32" -> {16, 32}. Throws eikon::Error naming `option` on anything else.
 std::vector<int> parseSizeList(const std::string& text, const char* option);
 

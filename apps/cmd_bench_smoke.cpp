@@ -192,13 +192,6 @@ SizeResult runSize(const Scene& scene, const SmokeSimulationSpec& spec, int fram
     return r;
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
 int runBenchSmoke(BenchSmokeOptions o) {
     if (o.quick) {
         o.sizes = "16";

@@ -80,12 +80,6 @@ std::vector<std::string> splitList(const std::string& text) {
     return out;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 template <typename F>
 std::vector<double> timeRuns(int reps, F&& run) {
     std::vector<double> ms;

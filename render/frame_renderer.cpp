@@ -6,6 +6,7 @@
 #include "core/resample.h"
 #include "render/environment_map.h"
 #include "render/gl_context.h"
+#include "render/input_key.h"
 #include "render/params_buffer.h"
 #include "render/photon_radiance.h"
 #include "render/refraction_volume.h"
@@ -67,11 +68,6 @@ FrameRenderer::~FrameRenderer() {
 }
 
 namespace {
-
-void appendBytes(std::vector<unsigned char>& key, const void* data, size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    key.insert(key.end(), bytes, bytes + size);
-}
 
 void appendVersions(std::vector<unsigned char>& key, const std::vector<const DenseGrid*>& grids) {
     for (const DenseGrid* g : grids) appendBytes(key, &g->version, sizeof(g->version));

@@ -4,16 +4,12 @@
 
 #include "core/error.h"
 #include "core/mesh_placement.h"
+#include "render/input_key.h"
 #include "render/voxelize.h"
 
 namespace eikon {
 
 namespace {
-
-void appendBytes(std::vector<unsigned char>& key, const void* data, size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    key.insert(key.end(), bytes, bytes + size);
-}
 
 std::vector<unsigned char> placementKey(std::uint64_t version, const MeshObjectSpec& spec) {
     std::vector<unsigned char> key;
