@@ -53,6 +53,7 @@ private:
 
     std::unique_ptr<ShaderProgram> toggle_, scan_, coverage_, blur_;
     unsigned positions_ = 0, triangles_ = 0, bits_ = 0;
+    size_t bitWords_ = 0;  // the size bits_ was allocated for
     unsigned scratch_ = 0;
     glm::ivec3 scratchRes_{0};
     unsigned hostTarget_ = 0;

@@ -74,7 +74,18 @@ void MeshVoxelizerGpu::voxelize(const TriangleMesh& mesh, const RenderVolume& vo
     for (const glm::uvec3& t : mesh.triangles) triangles.emplace_back(t, 0u);
     uploadBuffer(positions_, positions);
     uploadBuffer(triangles_, triangles);
-    uploadBuffer(bits_, std::vector<GLuint>(columns * size_t(words), 0u));
+    // The bit columns are kept between calls and cleared on the GPU: no zeros sent each frame.
+    const size_t bitWords = columns * size_t(words);
+    if (!bits_ || bitWords != bitWords_) {
+        uploadBuffer(bits_, std::vector<GLuint>(bitWords, 0u));
+        bitWords_ = bitWords;
+    } else {
+        const GLuint zero = 0;
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, bits_);
+        glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                          &zero);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    }
 
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positions_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, triangles_);

@@ -88,7 +88,7 @@ TEST_CASE("a later mesh displaces an earlier one where they overlap", "[meshes]"
 
 TEST_CASE("meshes are voxelized again only when they move", "[meshes]") {
     FrameRenderer renderer(parseScene(kBallScene, "ball.json"), Backend::Cpu);
-    const Image first = renderer.render(0);
+    renderer.render(0);
     CHECK(renderer.voxelizations() == 1);
     renderer.scene().camera.automatic = false;
     renderer.scene().camera.position = glm::vec3(1.5f, 0.5f, 2.0f);
@@ -103,7 +103,6 @@ TEST_CASE("meshes are voxelized again only when they move", "[meshes]") {
     renderer.setMesh(0, icosphere(glm::vec3(0.0f), 0.45f, 2));
     renderer.render(0);
     CHECK(renderer.voxelizations() == 3);  // new triangles
-    CHECK(first.width == 40);
 }
 
 TEST_CASE("a mesh from a file that nobody loaded is an error naming it", "[meshes]") {
