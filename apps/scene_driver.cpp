@@ -1,6 +1,7 @@
 #include "apps/scene_driver.h"
 
 #include "core/mesh_placement.h"
+#include "sim/container_fill.h"
 #include "sim/refractive_mesh.h"
 
 namespace eikon::app {
@@ -27,15 +28,24 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
                             world, sim::jellySettings(*spec.jelly, scene.time.fps))};
             simulated_.push_back(std::move(s));
         } else if (spec.shape == MeshShapeType::File) {
-            fileMeshes_.emplace_back(m, std::move(local));
+            fixedMeshes_.emplace_back(m, std::move(local));
+        } else if (spec.shape == MeshShapeType::Liquid) {
+            // Made from the container's object-space mesh, so it shares its placement.
+            const size_t container = size_t(spec.container);
+            TriangleMesh containerMesh = meshShape(scene.meshes[container]);
+            for (const auto& [c, mesh] : fixedMeshes_)
+                if (c == container) containerMesh = mesh;
+            fixedMeshes_.emplace_back(
+                m, fillContainer(containerMesh, spec.fill, scene.path + ":" + spec.jsonPath)
+                       .mesh);
         }
     }
 }
 
 void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
-    if (!fileMeshesSet_) {
-        for (const auto& [m, mesh] : fileMeshes_) renderer.setMesh(m, mesh);
-        fileMeshesSet_ = true;
+    if (!fixedMeshesSet_) {
+        for (const auto& [m, mesh] : fixedMeshes_) renderer.setMesh(m, mesh);
+        fixedMeshesSet_ = true;
     }
     if (!animation_.empty()) animation_.apply(clock_.timeOfFrame(frame), renderer.scene());
     for (Simulated& s : simulated_) {

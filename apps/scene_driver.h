@@ -4,7 +4,8 @@
 // evaluated at the frame's time on the one clock (sim/clock.h, the scene's fps), and every
 // simulated mesh (water surfaces, jellies) stepped to that frame from its start at frame 0, so a
 // frame is the same however it is reached. Mesh files are read once, here (sim/refractive_mesh.h:
-// holes closed as the scene asks, then checked closed), since the renderer cannot read them.
+// holes closed as the scene asks, then checked closed), since the renderer cannot read them, and
+// liquids are made once from their containers (sim/container_fill.h).
 #include <memory>
 #include <utility>
 #include <vector>
@@ -36,9 +37,10 @@ private:
         int frameSet = -1;  // the frame whose mesh the renderer has
     };
     std::vector<Simulated> simulated_;
-    // Meshes read from files that no simulation moves: handed to the renderer once.
-    std::vector<std::pair<size_t, TriangleMesh>> fileMeshes_;
-    bool fileMeshesSet_ = false;
+    // Meshes made here that no simulation moves (read from files, liquids filling their
+    // containers): handed to the renderer once.
+    std::vector<std::pair<size_t, TriangleMesh>> fixedMeshes_;
+    bool fixedMeshesSet_ = false;
 };
 
 }  // namespace eikon::app

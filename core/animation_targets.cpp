@@ -54,6 +54,12 @@ std::optional<AnimationTarget> meshTarget(const Scene& scene, int i, const std::
               "); its placement only sets where it starts and cannot be animated";
         return std::nullopt;
     }
+    if (mesh.shape == MeshShapeType::Liquid &&
+        (key == "translate" || key == "scale" || key == "rotation")) {
+        why = "mesh '" + mesh.name + "' is a liquid and moves with its container '" +
+              scene.meshes[size_t(mesh.container)].name + "'; animate the container";
+        return std::nullopt;
+    }
     if (key == "translate") return make(TargetKind::MeshTranslate, i, 3);
     if (key == "scale") return make(TargetKind::MeshScale, i, 3, 1e-6, 1e30);
     if (key == "rotation") {
@@ -122,6 +128,16 @@ std::optional<AnimationTarget> materialTarget(const Scene& scene, int m, const s
     return std::nullopt;
 }
 
+// Liquids stand in their containers: they take the container's placement whenever it moves.
+void moveLiquidsWith(Scene& scene, size_t container) {
+    for (MeshObjectSpec& mesh : scene.meshes) {
+        if (mesh.shape != MeshShapeType::Liquid || mesh.container != int(container)) continue;
+        mesh.translation = scene.meshes[container].translation;
+        mesh.rotation = scene.meshes[container].rotation;
+        mesh.scale = scene.meshes[container].scale;
+    }
+}
+
 }  // namespace
 
 const char* animationTargetExamples() {
@@ -184,12 +200,19 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
     const glm::vec3 v3(v[0], v[1], v[2]);
     const size_t i = size_t(t.index);
     switch (t.kind) {
-        case TargetKind::MeshTranslate: scene.meshes[i].translation = v3; break;
-        case TargetKind::MeshScale: scene.meshes[i].scale = v3; break;
+        case TargetKind::MeshTranslate:
+            scene.meshes[i].translation = v3;
+            moveLiquidsWith(scene, i);
+            break;
+        case TargetKind::MeshScale:
+            scene.meshes[i].scale = v3;
+            moveLiquidsWith(scene, i);
+            break;
         case TargetKind::MeshRotation: {
             const glm::quat q(value[3], value[0], value[1], value[2]);  // [x, y, z, w]
             const float length = glm::length(q);
             if (length > 0.0f && std::isfinite(length)) scene.meshes[i].rotation = q / length;
+            moveLiquidsWith(scene, i);
             break;
         }
         case TargetKind::LightPosition: scene.lights[i].position = v3; break;

@@ -22,6 +22,7 @@ TriangleMesh meshShape(const MeshObjectSpec& spec) {
                            {half.x, spec.water.depth + headroom, half.y});
         }
         case MeshShapeType::File:
+        case MeshShapeType::Liquid:
             break;
     }
     return {};

@@ -6,7 +6,8 @@
 
 namespace eikon {
 
-// The object-space mesh of a generated shape (icosphere, box); empty for a mesh read from a file.
+// The object-space mesh of a generated shape (icosphere, box); empty for a mesh read from a file
+// and for a liquid (made from its container by sim/container_fill.h).
 // Water: the box its waves stay in (the rest body with headroom for the droplets), which the
 // render volume is framed on; the surface itself comes from sim/water_surface.h each frame.
 TriangleMesh meshShape(const MeshObjectSpec& spec);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <string>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -136,6 +137,47 @@ std::vector<std::uint32_t> cylinderRings(std::uint32_t around, std::uint32_t seg
     if (first == 0) vertices.push_back((segments + 1) * around);
     if (last >= segments) vertices.push_back((segments + 1) * around + 1);
     return vertices;
+}
+
+TriangleMesh revolvedProfile(const std::vector<glm::vec2>& profile, std::uint32_t sectors) {
+    const size_t n = profile.size();
+    if (n < 3 || sectors < 3)
+        throw Error("revolved profile", "needs at least 3 profile points and 3 sectors");
+    if (profile.front().x != 0.0f || profile.back().x != 0.0f)
+        throw Error("revolved profile", "the profile must start and end on the axis (r = 0)");
+    for (size_t i = 1; i + 1 < n; ++i)
+        if (!(profile[i].x > 0.0f))
+            throw Error("revolved profile", "point " + std::to_string(i) +
+                                                " lies on or across the axis (r must be > 0)");
+    TriangleMesh mesh;
+    const double pi = 3.14159265358979323846;
+    const std::uint32_t rings = std::uint32_t(n - 2);
+    for (std::uint32_t k = 0; k < rings; ++k) {
+        const glm::vec2 p = profile[k + 1];
+        for (std::uint32_t a = 0; a < sectors; ++a) {
+            const double theta = 2.0 * pi * a / sectors;
+            mesh.positions.emplace_back(p.x * float(std::cos(theta)), p.y,
+                                        p.x * float(std::sin(theta)));
+        }
+    }
+    const std::uint32_t first = rings * sectors, last = first + 1;
+    mesh.positions.emplace_back(0.0f, profile.front().y, 0.0f);
+    mesh.positions.emplace_back(0.0f, profile.back().y, 0.0f);
+    auto at = [&](std::uint32_t k, std::uint32_t a) { return k * sectors + a % sectors; };
+    for (std::uint32_t a = 0; a < sectors; ++a)
+        mesh.triangles.emplace_back(first, at(0, a), at(0, a + 1));
+    for (std::uint32_t k = 0; k + 1 < rings; ++k) {
+        for (std::uint32_t a = 0; a < sectors; ++a) {
+            mesh.triangles.emplace_back(at(k, a), at(k + 1, a), at(k + 1, a + 1));
+            mesh.triangles.emplace_back(at(k, a), at(k + 1, a + 1), at(k, a + 1));
+        }
+    }
+    for (std::uint32_t a = 0; a < sectors; ++a)
+        mesh.triangles.emplace_back(last, at(rings - 1, a + 1), at(rings - 1, a));
+    // The winding above is outward for one direction of travel; flip it for the other.
+    if (signedVolume(mesh) < 0.0)
+        for (glm::uvec3& t : mesh.triangles) std::swap(t.y, t.z);
+    return mesh;
 }
 
 TriangleMesh translated(TriangleMesh mesh, glm::vec3 offset) {

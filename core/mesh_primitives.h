@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "core/triangle_mesh.h"
 
 namespace eikon {
@@ -30,6 +32,14 @@ TriangleMesh makeCylinder(float radius, float length, std::uint32_t around, std:
 // the range includes ring 0 or the last ring: the handles that hold or move one end.
 std::vector<std::uint32_t> cylinderRings(std::uint32_t around, std::uint32_t segments,
                                          std::uint32_t first, std::uint32_t last);
+
+// A closed surface of revolution about the y axis: `profile` is a polyline of (r, y) points that
+// starts and ends on the axis (r = 0) with r > 0 in between, swept through `sectors` angles
+// (vertex angle 2πa/sectors from +x towards +z). The two axis points become single vertices closed
+// by fans. Wound outward whichever way the profile runs. Throws eikon::Error for fewer than 3
+// points, ends off the axis, an inner point with r <= 0 or fewer than 3 sectors. Tests build cups
+// and glasses with it whose volumes are known exactly.
+TriangleMesh revolvedProfile(const std::vector<glm::vec2>& profile, std::uint32_t sectors);
 
 // The mesh moved by `offset` (a rigid translation of every position).
 TriangleMesh translated(TriangleMesh mesh, glm::vec3 offset);

@@ -110,7 +110,9 @@ struct MaterialSpec {
 // needs to be smooth (its gradient is the surface normal). Overlapping meshes: a later mesh in
 // the list displaces earlier ones (each coverage is multiplied by 1 − the coverage of every later
 // mesh), so the optics never add up where two objects overlap.
-enum class MeshShapeType { File, Icosphere, Box, Water };
+// A liquid fills an earlier mesh (its container, a glass or cup) to a fraction of its cavity's
+// depth (sim/container_fill.h), and keeps the container's placement as that moves.
+enum class MeshShapeType { File, Icosphere, Box, Water, Liquid };
 
 // A pool of water whose surface follows the damped wave equation (sim/water_surface.h), stepped
 // on the scene's clock; droplets dent it at given times.
@@ -163,6 +165,8 @@ struct MeshObjectSpec {
     glm::vec3 boxMin{-0.5f};  // Box
     glm::vec3 boxMax{0.5f};   // Box
     WaterSpec water;          // Water
+    int container = -1;       // Liquid: index of the mesh it fills, always an earlier one
+    double fill = 0.5;        // Liquid: fraction of the cavity's depth, in (0, 1]
     std::optional<JellySpec> jelly;  // a deformer: the mesh wobbles as a jelly
     glm::vec3 scale{1.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z

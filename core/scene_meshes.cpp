@@ -59,11 +59,21 @@ void readWater(Object& object, WaterSpec& water) {
             water.droplets.push_back(readDroplet(d, water));
 }
 
-void readShape(const Value& value, MeshObjectSpec& mesh) {
+// A liquid's container is named here and resolved in readMeshes, which knows the earlier meshes.
+void readShape(const Value& value, MeshObjectSpec& mesh, std::string& containerName) {
     Object object(value, "a mesh shape");
-    const std::string type = object.required("type", "\"icosphere\", \"box\" or \"water\"")
-                                 .choice({"icosphere", "box", "water"});
-    if (type == "water") {
+    const std::string type =
+        object.required("type", "\"icosphere\", \"box\", \"water\" or \"liquid\"")
+            .choice({"icosphere", "box", "water", "liquid"});
+    if (type == "liquid") {
+        object.setKind("a liquid shape");
+        mesh.shape = MeshShapeType::Liquid;
+        containerName =
+            object.required("container", "the name of an earlier mesh (the glass it fills)")
+                .nonEmptyString();
+        mesh.fill = object.required("fill", "a fraction of the cavity's depth in (0, 1]")
+                        .number(Range::openClosed(0.0, 1.0));
+    } else if (type == "water") {
         object.setKind("a water shape");
         mesh.shape = MeshShapeType::Water;
         readWater(object, mesh.water);
@@ -157,7 +167,7 @@ void readBlur(const Value& value, MeshObjectSpec& mesh) {
 }
 
 MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDirectory,
-                        MaterialSpec& optics) {
+                        MaterialSpec& optics, std::string& containerName) {
     Object object(value, "a mesh");
     MeshObjectSpec mesh;
     mesh.jsonPath = value.pointer();
@@ -175,10 +185,15 @@ MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDi
         if (auto holes = object.optional("close_holes"))
             mesh.closeHolesUpTo = int(holes->integer(0, 1000000));
     } else {
-        readShape(*shape, mesh);
+        readShape(*shape, mesh, containerName);
         if (auto holes = object.optional("close_holes"))
             holes->fail("\"close_holes\" applies to meshes read from a file");
     }
+    if (mesh.shape == MeshShapeType::Liquid)
+        for (const char* key : {"translate", "rotation", "rotate_deg", "scale"})
+            if (auto placed = object.optional(key))
+                placed->fail("a liquid stands in its container and takes the container's "
+                             "placement; place the container instead");
     if (auto t = object.optional("translate")) mesh.translation = t->vec3();
     readRotation(object, mesh);
     if (auto s = object.optional("scale")) {
@@ -189,6 +204,8 @@ MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDi
     if (auto deformer = object.optional("deformer")) {
         if (mesh.shape == MeshShapeType::Water)
             deformer->fail("a water shape moves by its own equation; it takes no deformer");
+        if (mesh.shape == MeshShapeType::Liquid)
+            deformer->fail("a liquid follows its container's shape; it takes no deformer");
         readDeformer(*deformer, mesh);
     }
 
@@ -202,6 +219,29 @@ MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDi
     return mesh;
 }
 
+// The container is an earlier mesh (so the liquid, later, displaces the glass where their voxels
+// overlap) whose shape stays put: a simulated or deformed one would need the liquid re-made
+// every frame, which is not done.
+void placeInContainer(const Value& at, const std::string& name,
+                      const std::vector<MeshObjectSpec>& earlier, MeshObjectSpec& liquid) {
+    const auto it = std::find_if(earlier.begin(), earlier.end(),
+                                 [&](const MeshObjectSpec& m) { return m.name == name; });
+    if (it == earlier.end())
+        at.fail("no earlier mesh is named \"" + name +
+                "\" (a liquid's container must come before it in \"meshes\")");
+    if (it->shape == MeshShapeType::Water || it->shape == MeshShapeType::Liquid)
+        at.fail("mesh \"" + name + "\" is " +
+                (it->shape == MeshShapeType::Water ? "water" : "a liquid") +
+                ", not a container");
+    if (it->jelly)
+        at.fail("mesh \"" + name + "\" is a jelly: a liquid in a deforming container is not "
+                "supported");
+    liquid.container = int(it - earlier.begin());
+    liquid.scale = it->scale;
+    liquid.rotation = it->rotation;
+    liquid.translation = it->translation;
+}
+
 }  // namespace
 
 ParsedMeshes readMeshes(const Value& value, const std::filesystem::path& sceneDirectory) {
@@ -209,12 +249,16 @@ ParsedMeshes readMeshes(const Value& value, const std::filesystem::path& sceneDi
     const std::vector<Value> elements = value.elements("an array of meshes", kMaxMeshes);
     for (std::size_t i = 0; i < elements.size(); ++i) {
         MaterialSpec optics;
-        MeshObjectSpec mesh = readMesh(elements[i], sceneDirectory, optics);
+        std::string containerName;
+        MeshObjectSpec mesh = readMesh(elements[i], sceneDirectory, optics, containerName);
         for (std::size_t j = 0; j < out.meshes.size(); ++j)
             if (out.meshes[j].name == mesh.name)
                 elements[i].child("name").fail("duplicate mesh name \"" + mesh.name +
                                                "\" (already used by " + elements[j].pointer() +
                                                ")");
+        if (mesh.shape == MeshShapeType::Liquid)
+            placeInContainer(elements[i].child("shape").child("container"), containerName,
+                             out.meshes, mesh);
         const MeshFieldNames fields = meshMaterialFieldNames(mesh);
         const bool volumetric = optics.absorption != glm::vec3(0.0f) ||
                                 optics.scattering != glm::vec3(0.0f) ||

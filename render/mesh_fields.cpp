@@ -25,7 +25,9 @@ std::vector<unsigned char> placementKey(std::uint64_t version, const MeshObjectS
 MeshFields::MeshFields(const Scene& scene) : meshes_(scene.meshes.size()) {
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         const MeshShapeType shape = scene.meshes[i].shape;
-        if (shape == MeshShapeType::File || shape == MeshShapeType::Water) continue;
+        if (shape == MeshShapeType::File || shape == MeshShapeType::Water ||
+            shape == MeshShapeType::Liquid)
+            continue;
         meshes_[i].local = meshShape(scene.meshes[i]);
         meshes_[i].loaded = true;
     }
@@ -53,6 +55,11 @@ const TriangleMesh& MeshFields::placed(const Scene& scene, size_t index) {
                     "mesh '" + spec.name +
                         "' (water) was never stepped: the program rendering the scene must "
                         "step its surface (sim/water_surface.h) and set the mesh");
+    if (!m.loaded && spec.shape == MeshShapeType::Liquid)
+        throw Error(scene.path + ":" + spec.jsonPath + "/shape",
+                    "mesh '" + spec.name +
+                        "' (a liquid) was never made: the program rendering the scene must fill "
+                        "its container (sim/container_fill.h) and set the mesh");
     if (!m.loaded)
         throw Error(scene.path + ":" + spec.jsonPath + "/file",
                     "mesh '" + spec.name + "' (" + spec.file +

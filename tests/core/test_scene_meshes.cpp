@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/animation_targets.h"
 #include "core/error.h"
 #include "core/mesh_placement.h"
 #include "core/scene.h"
@@ -61,6 +62,31 @@ TEST_CASE("shapes make closed meshes; a quaternion rotation is read in glTF orde
     point.positions = {glm::vec3(1.0f, 0.0f, 0.0f)};
     CHECK(glm::length(placeMesh(point, scene.meshes[1]).positions[0] - glm::vec3(0, 1, 0)) < 1e-5f);
     CHECK(scene.materials.size() == 2);  // a.n, b
+}
+
+TEST_CASE("a liquid takes its container's placement, now and when it is animated",
+          "[scene][meshes]") {
+    Scene scene = parseMeshes(R"([
+        {"name": "glass", "file": "g.obj", "ior": 1.5, "translate": [1, 2, 3], "scale": 0.5,
+         "rotate_deg": [0, 90, 0]},
+        {"name": "wine", "shape": {"type": "liquid", "container": "glass", "fill": 0.25},
+         "ior": 1.34, "absorption": [0.2, 2, 2]}])");
+    REQUIRE(scene.meshes.size() == 2);
+    const MeshObjectSpec& wine = scene.meshes[1];
+    CHECK(wine.shape == MeshShapeType::Liquid);
+    CHECK(wine.container == 0);
+    CHECK(wine.fill == 0.25);
+    CHECK(wine.translation == scene.meshes[0].translation);
+    CHECK(wine.scale == scene.meshes[0].scale);
+    CHECK(wine.rotation == scene.meshes[0].rotation);
+    CHECK(meshShape(wine).triangles.empty());  // made from the container by the driver
+
+    std::string why;
+    const auto target = resolveAnimationTarget(scene, "/meshes/0/translate", why);
+    REQUIRE(target);
+    const float moved[3] = {4.0f, 5.0f, 6.0f};
+    writeAnimationTarget(scene, *target, moved);
+    CHECK(scene.meshes[1].translation == glm::vec3(4.0f, 5.0f, 6.0f));
 }
 
 TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]") {
@@ -120,6 +146,28 @@ TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]
               "deformer": {"type": "jelly"}}])",
           "/animation/0/target", "moves by its own simulation",
           R"(, "animation": [{"target": "/meshes/0/translate", "times": [0], "values": [[0, 0, 0]]}])");
+    const std::string glass = R"({"name": "glass", "file": "g.obj", "ior": 1.5})";
+    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "cup", "fill": 0.5}, "ior": 1.33}])",
+          "/meshes/1/shape/container", "no earlier mesh is named \"cup\"");
+    fails(R"([{"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5}, "ior": 1.33}, )" +
+              glass + "]",
+          "/meshes/0/shape/container", "must come before it");
+    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 1.2}, "ior": 1.33}])",
+          "/meshes/1/shape/fill", "(0, 1]");
+    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass"}, "ior": 1.33}])",
+          "/meshes/1/shape/fill", "missing required key");
+    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5},
+              "translate": [0, 1, 0], "ior": 1.33}])",
+          "/meshes/1/translate", "container's placement");
+    fails(R"([{"name": "p", "shape": {"type": "water", "size": [2, 2], "depth": 0.3}, "ior": 1.33},
+              {"name": "w", "shape": {"type": "liquid", "container": "p", "fill": 0.5}, "ior": 1.33}])",
+          "/meshes/1/shape/container", "not a container");
+    fails(R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4, "deformer": {"type": "jelly"}},
+              {"name": "w", "shape": {"type": "liquid", "container": "j", "fill": 0.5}, "ior": 1.33}])",
+          "/meshes/1/shape/container", "deforming container");
+    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5}, "ior": 1.33}])",
+          "/animation/0/target", "moves with its container 'glass'",
+          R"(, "animation": [{"target": "/meshes/1/translate", "times": [0], "values": [[0, 0, 0]]}])");
     // Without meshes, sources and materials stay required.
     CHECK_THROWS_WITH(parseScene("{}", "m.json"), Catch::Contains("missing required key 'sources'"));
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "render/image.h"
 #include "support/run_eikon.h"
 #include "support/test_paths.h"
 
@@ -313,4 +314,50 @@ TEST_CASE("eikon render reads mesh files: closed ones render, open ones fail unt
         dir);
     INFO("stdout:\n" << filled.out << "stderr:\n" << filled.err);
     CHECK(filled.exitCode == 0);
+}
+
+TEST_CASE("eikon render fills the shared wine glass with a liquid that rises with its fill",
+          "[cli][meshes]") {
+    const std::string dir = scratchDir("cli_render_liquid");
+    auto sceneWith = [&](const std::string& container, const std::string& fill) {
+        const std::string path = dir + "/wine_" + fill + ".json";
+        writeFile(path, R"({
+  "meshes": [)" + container + R"(,
+             {"name": "wine", "shape": {"type": "liquid", "container": "glass", "fill": )" +
+                            fill + R"(}, "emission": [1, 0.3, 0.2], "absorption": [0.5, 0.5, 0.5]}],
+  "volume": {"resolution": 32},
+  "camera": {"position": [0, 0.4, 3], "look_at": [0, 0.4, 0]},
+  "render": {"width": 24, "height": 32},
+  "output": {"name": "wine", "png": false, "exr": true}
+})");
+        return quoted(path);
+    };
+    const std::string glass = R"({"name": "glass", "file": ")" +
+                              sharedData("meshes/wine_glass.obj") +
+                              R"(", "scale": 0.5, "translate": [0, -0.2, 0], "absorption": [0.2, 0.2, 0.2]})";
+    // The liquid glows: its light in the image grows with how much of the bowl it fills.
+    auto glow = [&](const std::string& fill) {
+        const RunResult r = runEikon("render " + sceneWith(glass, fill) + " -o " +
+                                         quoted(dir + "/" + fill) + " --backend cpu",
+                                     dir);
+        INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+        REQUIRE(r.exitCode == 0);
+        double red = 0.0;
+        for (const glm::vec4& p : eikon::readExr(dir + "/" + fill + "/wine_0000.exr").pixels)
+            red += p.r;
+        return red;
+    };
+    const double low = glow("0.3"), high = glow("0.9");
+    CHECK(low > 0.0);
+    CHECK(high > 2.0 * low);
+
+    // A container without a cavity: one line naming the liquid's place in the scene.
+    const RunResult ball = runEikon(
+        "render " +
+            sceneWith(R"({"name": "glass", "shape": {"type": "icosphere", "radius": 0.5}, "ior": 1.5})",
+                      "0.5") +
+            " -o " + quoted(dir + "/ball"),
+        dir);
+    checkOneLineError(ball, dir + "/wine_0.5.json:/meshes/1: ");
+    CHECK(contains(ball.err, "no cavity"));
 }
