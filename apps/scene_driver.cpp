@@ -15,18 +15,19 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
             options.closeHolesUpTo = std::size_t(spec.closeHolesUpTo);
             local = loadRefractiveMesh(spec.file, options).mesh;
         }
+        Simulated s;
+        s.mesh = m;
         if (spec.shape == MeshShapeType::Water) {
-            Simulated s{m, std::make_unique<sim::WaterSurface>(
-                               sim::waterSettings(spec.water, scene.time.fps)),
-                        nullptr};
-            simulated_.push_back(std::move(s));
+            s.water = std::make_unique<sim::WaterSurface>(
+                sim::waterSettings(spec.water, scene.time.fps));
         } else if (spec.jelly) {
             // The jelly lives in the world, starting where the mesh is placed.
-            const TriangleMesh world = placeMesh(local, spec);
-            Simulated s{m, nullptr,
-                        std::make_unique<sim::Jelly>(
-                            world, sim::jellySettings(*spec.jelly, scene.time.fps))};
-            simulated_.push_back(std::move(s));
+            s.jelly = std::make_unique<sim::Jelly>(placeMesh(local, spec),
+                                                   sim::jellySettings(*spec.jelly, scene.time.fps));
+        } else if (spec.arap) {
+            // Dragged in object space: the placement still applies (and may be animated).
+            s.arap = std::make_unique<sim::ArapDrag>(local, *spec.arap,
+                                                     scene.path + ":" + spec.jsonPath);
         } else if (spec.shape == MeshShapeType::File) {
             fixedMeshes_.emplace_back(m, std::move(local));
         } else if (spec.shape == MeshShapeType::Liquid) {
@@ -39,6 +40,7 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
                 m, fillContainer(containerMesh, spec.fill, scene.path + ":" + spec.jsonPath)
                        .mesh);
         }
+        if (s.water || s.jelly || s.arap) simulated_.push_back(std::move(s));
     }
 }
 
@@ -53,9 +55,20 @@ void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
         if (s.water) {
             s.water->advanceToFrame(frame);
             renderer.setMesh(s.mesh, s.water->mesh());
-        } else {
+        } else if (s.jelly) {
             s.jelly->advanceToFrame(frame);
             renderer.setMesh(s.mesh, unplaceMesh(s.jelly->mesh(), renderer.scene().meshes[s.mesh]));
+        } else {
+            // Frames before this one need their own handle positions: the tracks evaluated on a
+            // copy of the scene at each frame's time.
+            const Scene& now = renderer.scene();
+            s.arap->advanceToFrame(frame, [&](int k) {
+                if (k == frame || animation_.empty()) return *now.meshes[s.mesh].arap;
+                Scene then = now;
+                animation_.apply(clock_.timeOfFrame(k), then);
+                return *then.meshes[s.mesh].arap;
+            });
+            renderer.setMesh(s.mesh, s.arap->mesh());
         }
         s.frameSet = frame;
     }

@@ -2,7 +2,8 @@
 // What the commands that render a scene do to the renderer before each frame, so that `eikon
 // render` and `eikon view` show the same state at the same frame: the scene's keyframe tracks
 // evaluated at the frame's time on the one clock (sim/clock.h, the scene's fps), and every
-// simulated mesh (water surfaces, jellies) stepped to that frame from its start at frame 0, so a
+// simulated or dragged mesh (water surfaces, jellies, ARAP handles) stepped to that frame from its
+// start at frame 0, so a
 // frame is the same however it is reached. Mesh files are read once, here (sim/refractive_mesh.h:
 // holes closed as the scene asks, then checked closed), since the renderer cannot read them, and
 // liquids are made once from their containers (sim/container_fill.h).
@@ -12,6 +13,7 @@
 
 #include "render/frame_renderer.h"
 #include "sim/animation.h"
+#include "sim/arap_drag.h"
 #include "sim/clock.h"
 #include "sim/jelly.h"
 #include "sim/water_surface.h"
@@ -31,9 +33,10 @@ private:
     // A simulated mesh: only a new frame changes it, so a camera move on the same frame
     // re-voxelizes nothing.
     struct Simulated {
-        size_t mesh;
+        size_t mesh = 0;
         std::unique_ptr<sim::WaterSurface> water;
         std::unique_ptr<sim::Jelly> jelly;
+        std::unique_ptr<sim::ArapDrag> arap;
         int frameSet = -1;  // the frame whose mesh the renderer has
     };
     std::vector<Simulated> simulated_;

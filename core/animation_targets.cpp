@@ -92,6 +92,31 @@ std::optional<AnimationTarget> meshTarget(const Scene& scene, int i, const std::
     return std::nullopt;
 }
 
+// /meshes/<i>/deformer/handles/<j>/<key>, split.
+std::optional<AnimationTarget> handleTarget(const Scene& scene, int i,
+                                            const std::vector<std::string>& p, std::string& why) {
+    const MeshObjectSpec& mesh = scene.meshes[size_t(i)];
+    if (!mesh.arap) {
+        why = "mesh '" + mesh.name + "' has no ARAP deformer, so no handles to move";
+        return std::nullopt;
+    }
+    const int j = parseIndex(p[4]);
+    if (j < 0 || size_t(j) >= mesh.arap->handles.size()) {
+        why = "mesh '" + mesh.name + "' has no handle " + p[4] + " (its deformer has " +
+              std::to_string(mesh.arap->handles.size()) + ")";
+        return std::nullopt;
+    }
+    std::optional<AnimationTarget> t;
+    if (p[5] == "translate") t = make(TargetKind::HandleTranslate, i, 3);
+    if (p[5] == "rotation") {
+        t = make(TargetKind::HandleRotation, i, 4, -1.0, 1.0);
+        t->rotation = true;
+    }
+    if (!t) why = "a handle animates translate or rotation, not '" + p[5] + "'";
+    if (t) t->handle = j;
+    return t;
+}
+
 std::optional<AnimationTarget> lightTarget(const Scene& scene, int i, const std::string& key,
                                            std::string& why) {
     const LightSpec& light = scene.lights[size_t(i)];
@@ -142,7 +167,8 @@ void moveLiquidsWith(Scene& scene, size_t container) {
 
 const char* animationTargetExamples() {
     return "/lights/0/position, /lights/0/intensity, /meshes/0/rotation, /meshes/0/translate, "
-           "/materials/0/absorption, /camera/position, /camera/look_at";
+           "/meshes/0/deformer/handles/0/translate, /materials/0/absorption, /camera/position, "
+           "/camera/look_at";
 }
 
 std::optional<AnimationTarget> resolveAnimationTarget(const Scene& scene,
@@ -158,6 +184,12 @@ std::optional<AnimationTarget> resolveAnimationTarget(const Scene& scene,
                   std::to_string(count) + ")";
         return (p.size() == 3 && i >= 0 && size_t(i) < count) ? i : -1;
     };
+    if (p.size() == 6 && p[0] == "meshes" && p[2] == "deformer" && p[3] == "handles") {
+        const int i = parseIndex(p[1]);
+        if (i >= 0 && size_t(i) < scene.meshes.size()) return handleTarget(scene, i, p, why);
+        why = "no meshes " + p[1] + " (the scene has " + std::to_string(scene.meshes.size()) + ")";
+        return std::nullopt;
+    }
     if (!p.empty() && p[0] == "meshes") {
         const int i = indexed(scene.meshes.size(), "meshes");
         return i < 0 ? std::nullopt : meshTarget(scene, i, p[2], why);
@@ -213,6 +245,16 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
             const float length = glm::length(q);
             if (length > 0.0f && std::isfinite(length)) scene.meshes[i].rotation = q / length;
             moveLiquidsWith(scene, i);
+            break;
+        }
+        case TargetKind::HandleTranslate:
+            scene.meshes[i].arap->handles[size_t(t.handle)].translation = v3;
+            break;
+        case TargetKind::HandleRotation: {
+            const glm::quat q(value[3], value[0], value[1], value[2]);  // [x, y, z, w]
+            const float length = glm::length(q);
+            if (length > 0.0f && std::isfinite(length))
+                scene.meshes[i].arap->handles[size_t(t.handle)].rotation = q / length;
             break;
         }
         case TargetKind::LightPosition: scene.lights[i].position = v3; break;

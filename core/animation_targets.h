@@ -13,6 +13,7 @@ namespace eikon {
 
 enum class TargetKind {
     MeshTranslate, MeshRotation, MeshScale,
+    HandleTranslate, HandleRotation,  // an ARAP deformer's handle
     LightPosition, LightDirection, LightColor, LightIntensity, LightCone, LightSoftness,
     CameraPosition, CameraLookAt, CameraFov,
     MaterialAbsorption, MaterialScattering, MaterialEmission, MaterialIor, MaterialG,
@@ -21,6 +22,7 @@ enum class TargetKind {
 struct AnimationTarget {
     TargetKind kind = TargetKind::LightIntensity;
     int index = 0;  // mesh, light or material index (materials: in Scene::materials)
+    int handle = 0;  // HandleTranslate, HandleRotation: the handle's index in the deformer
     int width = 1;  // numbers per value: 1, 3, or 4 (a quaternion [x, y, z, w])
     double lo = -1e30, hi = 1e30;  // the valid range of each number (quaternions: unit length)
     bool rotation = false;         // a quaternion: slerp, normalized

@@ -155,6 +155,28 @@ struct JellySpec {
     std::vector<JellyPokeSpec> pokes;
 };
 
+// An as-rigid-as-possible deformer on a mesh (sim/arap_deformer.h, Sorkine & Alexa 2007): the
+// vertices inside each handle's region (in the mesh's object space, before placement) move
+// rigidly with the handle (about the region's centre: rotation, then translation), and the rest
+// of the mesh follows as rigidly as it can. Handle motion comes from keyframe tracks
+// (/meshes/<i>/deformer/handles/<j>/translate, .../rotation); a handle without any stays put.
+struct ArapHandleSpec {
+    std::string name;
+    bool sphere = true;
+    glm::vec3 center{0.0f};  // sphere; a box's centre is filled in as the pivot too
+    float radius = 0.1f;     // sphere
+    glm::vec3 boxMin{0.0f}, boxMax{0.0f};  // box
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z
+};
+
+struct ArapSpec {
+    // Local/global iterations per frame, each frame starting from the previous frame's shape
+    // (frame 0 from the rest shape), as an interactive drag would.
+    int iterations = 5;
+    std::vector<ArapHandleSpec> handles;
+};
+
 struct MeshObjectSpec {
     std::string name;  // unique among meshes and materials
     MeshShapeType shape = MeshShapeType::File;
@@ -168,6 +190,7 @@ struct MeshObjectSpec {
     int container = -1;       // Liquid: index of the mesh it fills, always an earlier one
     double fill = 0.5;        // Liquid: fraction of the cavity's depth, in (0, 1]
     std::optional<JellySpec> jelly;  // a deformer: the mesh wobbles as a jelly
+    std::optional<ArapSpec> arap;    // a deformer: handles drag the mesh as rigidly as possible
     glm::vec3 scale{1.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z
     glm::vec3 translation{0.0f};

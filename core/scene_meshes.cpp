@@ -149,11 +149,64 @@ JellySpec readJelly(Object& object) {
     return j;
 }
 
+ArapHandleSpec readHandle(const Value& value) {
+    Object object(value, "a handle");
+    ArapHandleSpec h;
+    h.name = object.required("name", "a non-empty string").nonEmptyString();
+    const auto sphere = object.optional("sphere");
+    const auto box = object.optional("box");
+    if (sphere && box) box->fail("give either \"sphere\" or \"box\", not both");
+    if (!sphere && !box)
+        object.failAt("sphere", "a handle needs a region: \"sphere\" or \"box\"");
+    if (sphere) {
+        Object region(*sphere, "a sphere region");
+        h.center = region.required("center", "an array of 3 numbers [x, y, z]").vec3();
+        h.radius =
+            region.required("radius", "a number > 0").floatNumber(Range::greaterThan(0.0));
+        region.finish();
+    } else {
+        Object region(*box, "a box region");
+        h.sphere = false;
+        h.boxMin = region.required("min", "an array of 3 numbers [x, y, z]").vec3();
+        const Value max = region.required("max", "an array of 3 numbers [x, y, z]");
+        h.boxMax = max.vec3();
+        if (!(h.boxMin.x < h.boxMax.x && h.boxMin.y < h.boxMax.y && h.boxMin.z < h.boxMax.z))
+            max.fail("expected max > min along every axis");
+        region.finish();
+        h.center = 0.5f * (h.boxMin + h.boxMax);
+    }
+    // A handle starts where its region is; tracks move it from there.
+    object.finish();
+    return h;
+}
+
+ArapSpec readArap(Object& object) {
+    ArapSpec a;
+    if (auto n = object.optional("iterations")) a.iterations = int(n->integer(1, 100));
+    const Value handles = object.required("handles", "an array of handles");
+    for (const Value& h : handles.elements("an array of handles")) {
+        ArapHandleSpec handle = readHandle(h);
+        for (const ArapHandleSpec& other : a.handles)
+            if (other.name == handle.name)
+                h.child("name").fail("duplicate handle name \"" + handle.name + "\"");
+        a.handles.push_back(std::move(handle));
+    }
+    if (a.handles.empty())
+        handles.fail("an ARAP deformer needs at least one handle (a fixed one holds the mesh)");
+    return a;
+}
+
 void readDeformer(const Value& value, MeshObjectSpec& mesh) {
     Object object(value, "a deformer");
-    object.required("type", "\"jelly\"").choice({"jelly"});
-    object.setKind("a jelly deformer");
-    mesh.jelly = readJelly(object);
+    const std::string type =
+        object.required("type", "\"jelly\" or \"arap\"").choice({"jelly", "arap"});
+    if (type == "jelly") {
+        object.setKind("a jelly deformer");
+        mesh.jelly = readJelly(object);
+    } else {
+        object.setKind("an ARAP deformer");
+        mesh.arap = readArap(object);
+    }
     object.finish();
 }
 
@@ -233,9 +286,9 @@ void placeInContainer(const Value& at, const std::string& name,
         at.fail("mesh \"" + name + "\" is " +
                 (it->shape == MeshShapeType::Water ? "water" : "a liquid") +
                 ", not a container");
-    if (it->jelly)
-        at.fail("mesh \"" + name + "\" is a jelly: a liquid in a deforming container is not "
-                "supported");
+    if (it->jelly || it->arap)
+        at.fail("mesh \"" + name + "\" has a deformer: a liquid in a deforming container is "
+                "not supported");
     liquid.container = int(it - earlier.begin());
     liquid.scale = it->scale;
     liquid.rotation = it->rotation;

@@ -43,6 +43,9 @@ public:
     // E after each iteration, with the rotations that best fit that iteration's positions.
     std::vector<double> solve(const std::vector<glm::vec3>& targets, int iterations);
 
+    // Back to the rest shape (the factorization stays): the next solve starts from rest.
+    void reset() { positions_ = rest_.positions; }
+
     // E of the current shape with its best-fitting rotations.
     double energy() const;
 
