@@ -1,5 +1,10 @@
 #include "sim/smoke_from_scene.h"
 
+#include <memory>
+
+#include "core/error.h"
+#include "sim/animation.h"
+
 namespace eikon::sim {
 namespace {
 
@@ -60,8 +65,8 @@ SmokeSettings smokeSettingsFrom(const SmokeSimulationSpec& spec, double fps) {
     return s;
 }
 
-SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps) {
-    SmokeSolver solver(smokeSettingsFrom(spec, fps));
+std::vector<SmokeSource> smokeSourcesFrom(const SmokeSimulationSpec& spec) {
+    std::vector<SmokeSource> sources;
     for (const SmokeSourceSpec& src : spec.sources) {
         SmokeSource source;
         source.shape = shapeFrom(src.shape);
@@ -69,9 +74,40 @@ SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps) {
         source.temperatureRate = src.temperatureRate;
         source.velocity = src.velocity;
         source.velocityRate = src.velocityRate;
-        solver.addSource(source);
+        sources.push_back(source);
     }
+    return sources;
+}
+
+SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps) {
+    SmokeSolver solver(smokeSettingsFrom(spec, fps));
+    for (const SmokeSource& source : smokeSourcesFrom(spec)) solver.addSource(source);
     for (const SimShapeSpec& obstacle : spec.obstacles) solver.addObstacle(shapeFrom(obstacle));
+    return solver;
+}
+
+SmokeSolver smokeSolverFrom(const Scene& scene) {
+    if (!scene.simulation) throw Error(scene.path, "no \"simulation\" section");
+    SmokeSimulationSpec spec = *scene.simulation;
+    SmokeSettings settings = smokeSettingsFrom(spec, scene.time.fps);
+    settings.firstFrame = scene.time.frameStart;
+    SmokeSolver solver(settings);
+    for (const SmokeSource& source : smokeSourcesFrom(spec)) solver.addSource(source);
+    for (const SimShapeSpec& obstacle : spec.obstacles) solver.addObstacle(shapeFrom(obstacle));
+
+    // The tracks that move sources, evaluated into a private copy of the scene (the others animate
+    // what the simulation never reads); each substep rebuilds the sources from that copy, so
+    // they depend on the time alone.
+    Scene keyed = scene;
+    keyed.animation.clear();
+    for (const AnimationTrack& track : scene.animation)
+        if (track.target.rfind("/simulation/", 0) == 0) keyed.animation.push_back(track);
+    if (keyed.animation.empty()) return solver;
+    auto state = std::make_shared<std::pair<Scene, SceneAnimation>>(keyed, SceneAnimation(keyed));
+    solver.setSourceUpdate([state](double seconds, std::vector<SmokeSource>& sources) {
+        state->second.apply(seconds, state->first);
+        sources = smokeSourcesFrom(*state->first.simulation);
+    });
     return solver;
 }
 

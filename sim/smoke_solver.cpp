@@ -182,8 +182,12 @@ SmokeStepStats SmokeSolver::advanceFrame() {
                         " substeps, more than the limit " + std::to_string(settings_.maxSubsteps) +
                         "; the simulation blew up");
     const float dt = float(clock_.frameDuration() / substeps);
+    const int sceneFrame = settings_.firstFrame + frame_;
     SmokeStepStats total;
-    for (int s = 0; s < substeps; ++s) total.add(step(dt));
+    for (int s = 0; s < substeps; ++s) {
+        if (sourceUpdate_) sourceUpdate_(clock_.timeOfSubstep(sceneFrame, s, substeps), sources_);
+        total.add(step(dt));
+    }
     ++frame_;
     return total;
 }
