@@ -53,6 +53,16 @@ void SmokeSolver::addObstacle(const SmokeShape& shape) {
     enforceSolids();
 }
 
+void SmokeSolver::addObstacle(const InsideBits& inside) {
+    const glm::ivec3 n = grid_.resolution();
+    if (inside.resolution != n) throw Error("smoke obstacle", "voxelized at another resolution");
+    for (int k = 0; k < n.z; ++k)
+        for (int j = 0; j < n.y; ++j)
+            for (int i = 0; i < n.x; ++i)
+                if (inside.inside(i, j, k)) grid_.solid[grid_.cellIndex(i, j, k)] = 1;
+    enforceSolids();
+}
+
 std::string SmokeSolver::where(const char* stage) const {
     return "smoke step " + std::to_string(steps_) + " (frame " + std::to_string(frame_) + ", " +
            stage + ")";

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh_voxelize.h"
 #include "sim/advection.h"
 #include "sim/clock.h"
 #include "sim/mac_grid.h"
@@ -82,6 +83,9 @@ public:
     const std::vector<SmokeSource>& sources() const { return sources_; }
     // Marks the cells whose centres lie inside the shape solid (static obstacles).
     void addObstacle(const SmokeShape& shape);
+    // Marks solid the cells whose centres a voxelized mesh holds (core/mesh_voxelize.h, on this
+    // grid's cells); throws eikon::Error if the bits are of another resolution.
+    void addObstacle(const InsideBits& inside);
 
     // One frame of 1/fps seconds in as many substeps as the CFL number asks, the sources updated
     // before each.

@@ -123,3 +123,55 @@ TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]
     // Without meshes, sources and materials stay required.
     CHECK_THROWS_WITH(parseScene("{}", "m.json"), Catch::Contains("missing required key 'sources'"));
 }
+
+TEST_CASE("a smoke obstacle names a mesh that stands still, or the error says why",
+          "[scene][meshes][simulation]") {
+    const std::string meshes = R"([
+        {"name": "glass", "shape": {"type": "icosphere", "radius": 0.2}, "ior": 1.5},
+        {"name": "blob", "shape": {"type": "icosphere", "radius": 0.2}, "ior": 1.4,
+         "deformer": {"type": "jelly"}},
+        {"name": "pool", "shape": {"type": "water", "size": [1, 1], "depth": 0.2}, "ior": 1.33}])";
+    auto scene = [&](const std::string& obstacle, const std::string& animation = "") {
+        return R"(, "simulation": {"domain": {"min": [-1, 0, -1], "max": [1, 2, 1]},
+            "resolution": 8, "obstacles": [{"type": "sphere"}, )" +
+               obstacle + "]}" + animation;
+    };
+    const Scene ok = parseMeshes(meshes, scene(R"({"mesh": "glass"})"));
+    REQUIRE(ok.simulation->obstacles.size() == 2);
+    CHECK(ok.simulation->obstacles[1].kind == SimShapeSpec::Kind::Mesh);
+    CHECK(ok.simulation->obstacles[1].mesh == 0);
+    CHECK(ok.simulation->obstacles[1].jsonPath == "/simulation/obstacles/1");
+    // Animating the glass's optics moves nothing: still an obstacle.
+    CHECK_NOTHROW(parseMeshes(meshes, scene(R"({"mesh": "glass"})",
+                                            R"(, "animation": [{"target": "/meshes/0/ior",
+                                               "times": [0, 1], "values": [1.5, 1.6]}])")));
+
+    auto fails = [&](const std::string& text, const std::string& where, const std::string& what) {
+        INFO(text);
+        CHECK_THROWS_WITH(parseMeshes(meshes, text),
+                          Catch::Contains("m.json:" + where) && Catch::Contains(what));
+    };
+    fails(scene(R"({"mesh": "glas"})"), "/simulation/obstacles/1/mesh",
+          "no mesh named 'glas' in \"meshes\" (it has 'glass', 'blob', 'pool')");
+    fails(scene(R"({"mesh": "blob"})"), "/simulation/obstacles/1/mesh",
+          "mesh 'blob' moves by its own simulation (jelly); a smoke obstacle must stand still");
+    fails(scene(R"({"mesh": "pool"})"), "/simulation/obstacles/1/mesh",
+          "mesh 'pool' moves by its own simulation (water)");
+    fails(scene(R"({"mesh": "glass", "type": "box"})"), "/simulation/obstacles/1/type",
+          "unknown key 'type' for a mesh obstacle");
+    fails(scene(R"({"mesh": "glass"})", R"(, "lights": [{"type": "point", "position": [0, 2, 0]}],
+              "animation": [{"target": "/lights/0/intensity", "times": [0], "values": [1]},
+              {"target": "/meshes/0/translate", "times": [0, 1],
+               "values": [[0, 0, 0], [0, 1, 0]]}])"),
+          "/simulation/obstacles/1/mesh",
+          "mesh 'glass' is moved by /animation/1 (/meshes/0/translate); a smoke obstacle must "
+          "stand still");
+    CHECK_THROWS_WITH(
+        parseScene(R"({"sources": [{"type": "sphere", "field": "density"}],
+            "materials": [{"name": "smoke", "scattering": [1, 1, 1]}],
+            "simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 8,
+            "obstacles": [{"mesh": "glass"}]}})",
+                   "n.json"),
+        Catch::Contains("n.json:/simulation/obstacles/0/mesh") &&
+            Catch::Contains("the scene has none"));
+}
