@@ -129,7 +129,7 @@ SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps) {
 
 SmokeSolver smokeSolverFrom(const Scene& scene) {
     if (!scene.simulation) throw Error(scene.path, "no \"simulation\" section");
-    SmokeSimulationSpec spec = *scene.simulation;
+    const SmokeSimulationSpec& spec = *scene.simulation;
     SmokeSettings settings = smokeSettingsFrom(spec, scene.time.fps);
     settings.firstFrame = scene.time.frameStart;
     SmokeSolver solver(settings);
