@@ -51,7 +51,9 @@ int runSimulate(const SimulateOptions& o) {
     fs::create_directories(directory, ec);
     if (ec) throw Error(directory, "cannot create the cache folder: " + ec.message());
 
-    sim::SmokeSolver solver = sim::smokeSolverFrom(spec, scene.time.fps);
+    // Keyframed sources move at every substep's time on the scene's clock, the clock `eikon render`
+    // evaluates its tracks on, so frame f of the cache is frame f of the render.
+    sim::SmokeSolver solver = sim::smokeSolverFrom(scene);
     const glm::ivec3 n = spec.resolution;
     std::printf("smoke %dx%dx%d, voxel %g, %g fps, frames %d-%d -> %s\n", n.x, n.y, n.z,
                 double(spec.voxelSize), scene.time.fps, written.frameStart, written.frameEnd,

@@ -163,12 +163,55 @@ void moveLiquidsWith(Scene& scene, size_t container) {
     }
 }
 
+// The keys match the parser's (core/scene_simulation.cpp) and so do the ranges: rates of density
+// and of pulling the velocity are ≥ 0, a temperature rate may be negative (a cold source).
+std::optional<AnimationTarget> sourceTarget(int i, const std::string& key, std::string& why) {
+    if (key == "center") return make(TargetKind::SourceCenter, i, 3);
+    if (key == "velocity") return make(TargetKind::SourceVelocity, i, 3);
+    if (key == "density_rate") return make(TargetKind::SourceDensityRate, i, 1, 0.0, 1e30);
+    if (key == "temperature_rate") return make(TargetKind::SourceTemperatureRate, i, 1);
+    if (key == "velocity_rate") return make(TargetKind::SourceVelocityRate, i, 1, 0.0, 1e30);
+    why = "a smoke source animates center, velocity, density_rate, temperature_rate or "
+          "velocity_rate, not '" + key + "'";
+    return std::nullopt;
+}
+
+std::optional<AnimationTarget> simulationTarget(const Scene& scene,
+                                                const std::vector<std::string>& p,
+                                                std::string& why) {
+    if (!scene.simulation) {
+        why = "the scene has no \"simulation\" section";
+        return std::nullopt;
+    }
+    if (p.size() != 4 || p[1] != "sources") {
+        why = "expected /simulation/sources/<index>/<key>";
+        return std::nullopt;
+    }
+    const size_t count = scene.simulation->sources.size();
+    const int i = parseIndex(p[2]);
+    if (i < 0 || size_t(i) >= count) {
+        why = "no simulation source " + p[2] + " (the simulation has " + std::to_string(count) +
+              ")";
+        return std::nullopt;
+    }
+    return sourceTarget(i, p[3], why);
+}
+
+// A box source keeps its size and moves so that its centre is at `center`.
+void moveShape(SimShapeSpec& shape, glm::vec3 center) {
+    shape.center = center;
+    if (shape.kind != SimShapeSpec::Kind::Box) return;
+    const glm::vec3 half = 0.5f * (shape.boxMax - shape.boxMin);
+    shape.boxMin = center - half;
+    shape.boxMax = center + half;
+}
+
 }  // namespace
 
 const char* animationTargetExamples() {
     return "/lights/0/position, /lights/0/intensity, /meshes/0/rotation, /meshes/0/translate, "
            "/meshes/0/deformer/handles/0/translate, /materials/0/absorption, /camera/position, "
-           "/camera/look_at";
+           "/camera/look_at, /simulation/sources/0/center";
 }
 
 std::optional<AnimationTarget> resolveAnimationTarget(const Scene& scene,
@@ -222,6 +265,7 @@ std::optional<AnimationTarget> resolveAnimationTarget(const Scene& scene,
         why = "the camera animates position, look_at or horizontal_fov_deg, not '" + p[1] + "'";
         return std::nullopt;
     }
+    if (!p.empty() && p[0] == "simulation") return simulationTarget(scene, p, why);
     why = std::string("not an animatable value; examples: ") + animationTargetExamples();
     return std::nullopt;
 }
@@ -278,6 +322,13 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
         case TargetKind::MaterialEmission: scene.materials[i].emission = v3; break;
         case TargetKind::MaterialIor: scene.materials[i].ior = v[0]; break;
         case TargetKind::MaterialG: scene.materials[i].g = v[0]; break;
+        case TargetKind::SourceCenter: moveShape(scene.simulation->sources[i].shape, v3); break;
+        case TargetKind::SourceVelocity: scene.simulation->sources[i].velocity = v3; break;
+        case TargetKind::SourceDensityRate: scene.simulation->sources[i].densityRate = v[0]; break;
+        case TargetKind::SourceTemperatureRate:
+            scene.simulation->sources[i].temperatureRate = v[0];
+            break;
+        case TargetKind::SourceVelocityRate: scene.simulation->sources[i].velocityRate = v[0]; break;
     }
 }
 

@@ -17,11 +17,13 @@ enum class TargetKind {
     LightPosition, LightDirection, LightColor, LightIntensity, LightCone, LightSoftness,
     CameraPosition, CameraLookAt, CameraFov,
     MaterialAbsorption, MaterialScattering, MaterialEmission, MaterialIor, MaterialG,
+    SourceCenter, SourceVelocity, SourceDensityRate, SourceTemperatureRate, SourceVelocityRate,
 };
 
 struct AnimationTarget {
     TargetKind kind = TargetKind::LightIntensity;
-    int index = 0;  // mesh, light or material index (materials: in Scene::materials)
+    // mesh, light, material (in Scene::materials) or smoke source (in simulation->sources) index
+    int index = 0;
     int handle = 0;  // HandleTranslate, HandleRotation: the handle's index in the deformer
     int width = 1;  // numbers per value: 1, 3, or 4 (a quaternion [x, y, z, w])
     double lo = -1e30, hi = 1e30;  // the valid range of each number (quaternions: unit length)

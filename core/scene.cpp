@@ -687,7 +687,7 @@ Scene readScene(const Value& root, const std::string& file) {
     if (auto output = object.optional("output")) scene.output = readOutput(*output);
     if (auto time = object.optional("time")) scene.time = readTime(*time);
     if (auto simulation = object.optional("simulation")) {
-        scene.simulation = readSimulation(*simulation, sceneDirectory);
+        scene.simulation = readSimulation(*simulation, sceneDirectory, scene.meshes);
         // The cache takes the scene's output name when it has one, so that a scene's images and
         // its simulation share a prefix.
         if (scene.output.nameSet) scene.simulation->cacheName = scene.output.name;
@@ -695,6 +695,7 @@ Scene readScene(const Value& root, const std::string& file) {
     // Last: tracks point into everything above.
     if (auto animation = object.optional("animation"))
         scene.animation = readAnimation(*animation, scene);
+    checkObstaclesStandStill(scene);
     object.finish();
     return scene;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
 #include "core/scene_helpers.h"
 
 namespace eikon {
@@ -137,9 +138,41 @@ SmokeSourceSpec readSource(const Value& value) {
     return source;
 }
 
-SimShapeSpec readObstacle(const Value& value) {
+// A mesh obstacle names an entry of the scene's "meshes" that stands still: a jelly, a water
+// surface or an ARAP-dragged mesh moves every frame, and the solver's solids do not.
+SimShapeSpec readMeshObstacle(Object& object, const std::vector<MeshObjectSpec>& meshes) {
+    SimShapeSpec shape;
+    shape.kind = SimShapeSpec::Kind::Mesh;
+    object.setKind("a mesh obstacle");
+    const Value name = object.required("mesh", "the name of an entry of \"meshes\"");
+    const std::string text = name.nonEmptyString();
+    for (std::size_t m = 0; m < meshes.size(); ++m)
+        if (meshes[m].name == text) shape.mesh = int(m);
+    if (shape.mesh < 0) {
+        std::string names;
+        for (const MeshObjectSpec& mesh : meshes)
+            names += (names.empty() ? "'" : ", '") + mesh.name + "'";
+        name.fail("no mesh named '" + text + "' in \"meshes\" (" +
+                  (names.empty() ? std::string("the scene has none") : "it has " + names) + ")");
+    }
+    const MeshObjectSpec& mesh = meshes[std::size_t(shape.mesh)];
+    if (mesh.jelly || mesh.shape == MeshShapeType::Water)
+        name.fail("mesh '" + text + "' moves by its own simulation (" +
+                  (mesh.jelly ? "jelly" : "water") +
+                  "); a smoke obstacle must stand still (moving solids are not simulated)");
+    if (mesh.arap)
+        name.fail("mesh '" + text + "' is dragged by ARAP handles; a smoke obstacle must stand "
+                  "still (moving solids are not simulated)");
+    if (mesh.shape == MeshShapeType::Liquid)
+        name.fail("mesh '" + text + "' is a liquid, not a solid the smoke flows around");
+    return shape;
+}
+
+SimShapeSpec readObstacle(const Value& value, const std::vector<MeshObjectSpec>& meshes) {
     Object object(value, "an obstacle");
-    const SimShapeSpec shape = readShape(object, "obstacle");
+    SimShapeSpec shape =
+        object.has("mesh") ? readMeshObstacle(object, meshes) : readShape(object, "obstacle");
+    shape.jsonPath = value.pointer();
     object.finish();
     return shape;
 }
@@ -174,8 +207,8 @@ void readForces(Object& object, SmokeSimulationSpec& sim) {
 
 }  // namespace
 
-SmokeSimulationSpec readSimulation(const Value& value,
-                                   const std::filesystem::path& sceneDirectory) {
+SmokeSimulationSpec readSimulation(const Value& value, const std::filesystem::path& sceneDirectory,
+                                   const std::vector<MeshObjectSpec>& meshes) {
     Object object(value, "the simulation");
     SmokeSimulationSpec sim;
     sim.domain = readDomain(object.required("domain",
@@ -198,7 +231,7 @@ SmokeSimulationSpec readSimulation(const Value& value,
     }
     if (auto obstacles = object.optional("obstacles")) {
         for (const Value& o : obstacles->elements("an array of obstacles")) {
-            sim.obstacles.push_back(readObstacle(o));
+            sim.obstacles.push_back(readObstacle(o, meshes));
         }
     }
     if (auto cache = object.optional("cache")) {
@@ -207,6 +240,22 @@ SmokeSimulationSpec readSimulation(const Value& value,
     sim.cacheDirectory = scene_detail::resolveAgainst(sceneDirectory, sim.cacheDirectory);
     object.finish();
     return sim;
+}
+
+void checkObstaclesStandStill(const Scene& scene) {
+    if (!scene.simulation) return;
+    for (const SimShapeSpec& obstacle : scene.simulation->obstacles) {
+        if (obstacle.kind != SimShapeSpec::Kind::Mesh) continue;
+        const std::string prefix = "/meshes/" + std::to_string(obstacle.mesh) + "/";
+        for (const AnimationTrack& track : scene.animation)
+            for (const char* key : {"translate", "rotation", "scale"})
+                if (track.target == prefix + key)
+                    throw Error(scene.path + ":" + obstacle.jsonPath + "/mesh",
+                                "mesh '" + scene.meshes[std::size_t(obstacle.mesh)].name +
+                                    "' is moved by " + track.jsonPath + " (" + track.target +
+                                    "); a smoke obstacle must stand still (moving solids are "
+                                    "not simulated)");
+    }
 }
 
 }  // namespace eikon

@@ -4,11 +4,18 @@
 #include <filesystem>
 
 #include "core/json_reader.h"
+#include "core/scene.h"
 #include "core/simulation_spec.h"
 
 namespace eikon {
 
+// `meshes`: the scene's, read before, which obstacles may name.
 SmokeSimulationSpec readSimulation(const json::Value& value,
-                                   const std::filesystem::path& sceneDirectory);
+                                   const std::filesystem::path& sceneDirectory,
+                                   const std::vector<MeshObjectSpec>& meshes);
+
+// Once the animation is read: a mesh obstacle whose placement a track animates would need a
+// moving solid, which the solver does not model; throws eikon::Error at the obstacle's "mesh".
+void checkObstaclesStandStill(const Scene& scene);
 
 }  // namespace eikon

@@ -17,14 +17,18 @@ enum class SimAdvection { SemiLagrangian, MacCormack, Bfecc };
 enum class SimLimiter { None, Clamp, Revert };
 enum class SimPreconditioner { Mic0, Multigrid };
 
-// A sphere (center, radius) or a box (boxMin, boxMax), in scene units.
+// A sphere (center, radius) or a box (boxMin, boxMax), in scene units; an obstacle may also be
+// one of the scene's meshes (Mesh: Scene::meshes[mesh], placed as that entry says), so that the
+// glass the renderer shows is the solid the smoke flows around.
 struct SimShapeSpec {
-    enum class Kind { Sphere, Box };
+    enum class Kind { Sphere, Box, Mesh };
     Kind kind = Kind::Sphere;
     glm::vec3 center{0.0f};
     float radius = 0.5f;
     glm::vec3 boxMin{-0.5f};
     glm::vec3 boxMax{0.5f};
+    int mesh = -1;         // Mesh: index into Scene::meshes
+    std::string jsonPath;  // e.g. "/simulation/obstacles/0", for messages
 };
 
 struct SmokeSourceSpec {

@@ -5,7 +5,9 @@
 // [0, 1] per voxel, x fastest like DenseGrid.
 //
 // The mesh must be closed (sim/mesh_check.h rejects open ones before they get here): an open
-// mesh leaves a column with odd parity, filled from the hole up to the volume's top.
+// mesh leaves a column with odd parity, filled from the hole up to the volume's top. The CPU twin
+// of the voxelization (voxelizeCoverageCpu, checkMeshForVoxelization) lives in core
+// (core/mesh_voxelize.h), which the smoke solver's mesh obstacles use too.
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/dense_grid.h"
+#include "core/mesh_voxelize.h"
 #include "core/triangle_mesh.h"
 
 namespace eikon {
@@ -24,12 +27,6 @@ struct IndexBlurSettings {
     int radiusVoxels = 4;      // window 2·radius + 1 = 9; 0 turns the blur off
 };
 
-// Throws eikon::Error naming `what` (the mesh's file or name) when a position the triangles use
-// is not finite or an index is out of range.
-void checkMeshForVoxelization(const TriangleMesh& mesh, const std::string& what);
-
-// CPU twin: triangles in parallel with atomic XOR (order-independent), then columns, then voxels.
-std::vector<float> voxelizeCoverageCpu(const TriangleMesh& mesh, const RenderVolume& volume);
 // CPU twin of the separable blur (three passes, each voxel independent).
 std::vector<float> blurCoverageCpu(const std::vector<float>& coverage, glm::ivec3 res,
                                    const IndexBlurSettings& settings);

@@ -1,5 +1,13 @@
 #include "sim/smoke_from_scene.h"
 
+#include <memory>
+
+#include "core/error.h"
+#include "core/mesh_placement.h"
+#include "core/mesh_voxelize.h"
+#include "sim/animation.h"
+#include "sim/refractive_mesh.h"
+
 namespace eikon::sim {
 namespace {
 
@@ -60,8 +68,8 @@ SmokeSettings smokeSettingsFrom(const SmokeSimulationSpec& spec, double fps) {
     return s;
 }
 
-SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps) {
-    SmokeSolver solver(smokeSettingsFrom(spec, fps));
+std::vector<SmokeSource> smokeSourcesFrom(const SmokeSimulationSpec& spec) {
+    std::vector<SmokeSource> sources;
     for (const SmokeSourceSpec& src : spec.sources) {
         SmokeSource source;
         source.shape = shapeFrom(src.shape);
@@ -69,9 +77,78 @@ SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps) {
         source.temperatureRate = src.temperatureRate;
         source.velocity = src.velocity;
         source.velocityRate = src.velocityRate;
-        solver.addSource(source);
+        sources.push_back(source);
     }
-    for (const SimShapeSpec& obstacle : spec.obstacles) solver.addObstacle(shapeFrom(obstacle));
+    return sources;
+}
+
+namespace {
+
+// The world-space triangles of a scene mesh, as the renderer places them (file meshes read,
+// holes closed and checked closed as for rendering).
+TriangleMesh worldMesh(const MeshObjectSpec& spec) {
+    TriangleMesh local = meshShape(spec);
+    if (spec.shape == MeshShapeType::File) {
+        RefractiveMeshOptions options;
+        options.closeHolesUpTo = std::size_t(spec.closeHolesUpTo);
+        local = loadRefractiveMesh(spec.file, options).mesh;
+    }
+    const TriangleMesh world = placeMesh(local, spec);
+    checkMeshForVoxelization(world, spec.shape == MeshShapeType::File ? spec.file : spec.name);
+    return world;
+}
+
+// `meshes`: the scene's, for mesh obstacles; null when only the simulation spec is at hand.
+void addObstacles(SmokeSolver& solver, const SmokeSimulationSpec& spec,
+                  const std::vector<MeshObjectSpec>* meshes) {
+    const Domain& d = solver.settings().domain;
+    for (const SimShapeSpec& obstacle : spec.obstacles) {
+        if (obstacle.kind != SimShapeSpec::Kind::Mesh) {
+            solver.addObstacle(shapeFrom(obstacle));
+            continue;
+        }
+        if (!meshes || obstacle.mesh < 0 || std::size_t(obstacle.mesh) >= meshes->size())
+            throw Error(obstacle.jsonPath,
+                        "a mesh obstacle needs the scene's meshes: build the "
+                        "solver from the scene (smokeSolverFrom(scene))");
+        // Solid cells: those whose centres the closed mesh holds (parity at the cell centres).
+        const TriangleMesh world = worldMesh((*meshes)[std::size_t(obstacle.mesh)]);
+        solver.addObstacle(
+            voxelizeInsideCpu(world, d.origin, glm::vec3(d.voxelSize), d.resolution));
+    }
+}
+
+}  // namespace
+
+SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps) {
+    SmokeSolver solver(smokeSettingsFrom(spec, fps));
+    for (const SmokeSource& source : smokeSourcesFrom(spec)) solver.addSource(source);
+    addObstacles(solver, spec, nullptr);
+    return solver;
+}
+
+SmokeSolver smokeSolverFrom(const Scene& scene) {
+    if (!scene.simulation) throw Error(scene.path, "no \"simulation\" section");
+    const SmokeSimulationSpec& spec = *scene.simulation;
+    SmokeSettings settings = smokeSettingsFrom(spec, scene.time.fps);
+    settings.firstFrame = scene.time.frameStart;
+    SmokeSolver solver(settings);
+    for (const SmokeSource& source : smokeSourcesFrom(spec)) solver.addSource(source);
+    addObstacles(solver, spec, &scene.meshes);
+
+    // The tracks that move sources, evaluated into a private copy of the scene (the others animate
+    // what the simulation never reads); each substep rebuilds the sources from that copy, so
+    // they depend on the time alone.
+    Scene keyed = scene;
+    keyed.animation.clear();
+    for (const AnimationTrack& track : scene.animation)
+        if (track.target.rfind("/simulation/", 0) == 0) keyed.animation.push_back(track);
+    if (keyed.animation.empty()) return solver;
+    auto state = std::make_shared<std::pair<Scene, SceneAnimation>>(keyed, SceneAnimation(keyed));
+    solver.setSourceUpdate([state](double seconds, std::vector<SmokeSource>& sources) {
+        state->second.apply(seconds, state->first);
+        sources = smokeSourcesFrom(*state->first.simulation);
+    });
     return solver;
 }
 

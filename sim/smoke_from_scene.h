@@ -1,6 +1,7 @@
 #pragma once
 // Builds the smoke solver a scene's "simulation" section describes (core/simulation_spec.h):
 // the one place where core's plain settings become sim's types.
+#include "core/scene.h"
 #include "core/simulation_spec.h"
 #include "sim/smoke_solver.h"
 
@@ -9,7 +10,17 @@ namespace eikon::sim {
 SmokeSettings smokeSettingsFrom(const SmokeSimulationSpec& spec, double fps);
 
 // A solver with the spec's sources and obstacles added, at frame 0. Throws eikon::Error when
-// the settings are unusable.
+// the settings are unusable, or when an obstacle is a mesh (those need the scene's meshes: use
+// the overload below).
 SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps);
+
+// The solver of a whole scene's simulation (which must have one), starting at the scene's
+// frame_start: the same as above, and the scene's tracks on /simulation/sources/... applied to the
+// sources at every substep's time (SourceUpdate), so a moving source leaves a smooth trail; mesh
+// obstacles read (files), placed and voxelized at the cell centres (core/mesh_voxelize.h).
+SmokeSolver smokeSolverFrom(const Scene& scene);
+
+// The solver's form of the spec's sources.
+std::vector<SmokeSource> smokeSourcesFrom(const SmokeSimulationSpec& spec);
 
 }  // namespace eikon::sim

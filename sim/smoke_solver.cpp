@@ -53,6 +53,16 @@ void SmokeSolver::addObstacle(const SmokeShape& shape) {
     enforceSolids();
 }
 
+void SmokeSolver::addObstacle(const InsideBits& inside) {
+    const glm::ivec3 n = grid_.resolution();
+    if (inside.resolution != n) throw Error("smoke obstacle", "voxelized at another resolution");
+    for (int k = 0; k < n.z; ++k)
+        for (int j = 0; j < n.y; ++j)
+            for (int i = 0; i < n.x; ++i)
+                if (inside.inside(i, j, k)) grid_.solid[grid_.cellIndex(i, j, k)] = 1;
+    enforceSolids();
+}
+
 std::string SmokeSolver::where(const char* stage) const {
     return "smoke step " + std::to_string(steps_) + " (frame " + std::to_string(frame_) + ", " +
            stage + ")";
@@ -182,8 +192,12 @@ SmokeStepStats SmokeSolver::advanceFrame() {
                         " substeps, more than the limit " + std::to_string(settings_.maxSubsteps) +
                         "; the simulation blew up");
     const float dt = float(clock_.frameDuration() / substeps);
+    const int sceneFrame = settings_.firstFrame + frame_;
     SmokeStepStats total;
-    for (int s = 0; s < substeps; ++s) total.add(step(dt));
+    for (int s = 0; s < substeps; ++s) {
+        if (sourceUpdate_) sourceUpdate_(clock_.timeOfSubstep(sceneFrame, s, substeps), sources_);
+        total.add(step(dt));
+    }
     ++frame_;
     return total;
 }

@@ -5,9 +5,11 @@
 // velocity it leaves is divergence-free. A blow-up (NaN or infinity in a field, a CFL far beyond
 // the set maximum, a pressure solve that does not converge) throws eikon::Error naming the step,
 // the field and the cell.
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "core/mesh_voxelize.h"
 #include "sim/advection.h"
 #include "sim/clock.h"
 #include "sim/mac_grid.h"
@@ -31,6 +33,9 @@ struct SmokeSource {
 struct SmokeSettings {
     Domain domain;
     double fps = 24.0;
+    // The scene frame the first advanceFrame() produces: frame f's substeps run from the time of
+    // frame f − 1 to the time of frame f on the clock (SimulationClock::timeOfSubstep).
+    int firstFrame = 0;
     double maxCfl = 1.0;  // substeps per frame keep max speed·dt/h at or below this
     // More substeps than this in one frame means the velocity exploded, not that the scene is
     // fast: the frame throws rather than grinding through thousands of steps.
@@ -63,23 +68,35 @@ struct SmokeStepStats {
     void add(const SmokeStepStats& o);
 };
 
+// Moves or changes the sources for a substep: called by advanceFrame() before each substep with
+// the time in seconds at which that substep ends (the sources are injected as of that time). It
+// must depend on nothing but the time, so that a frame is the same however the run was cut.
+using SourceUpdate = std::function<void(double seconds, std::vector<SmokeSource>& sources)>;
+
 class SmokeSolver {
 public:
     explicit SmokeSolver(const SmokeSettings& settings);
 
     void addSource(const SmokeSource& source) { sources_.push_back(source); }
+    // Keyframed sources (sim/smoke_from_scene.h builds one from a scene's tracks).
+    void setSourceUpdate(SourceUpdate update) { sourceUpdate_ = std::move(update); }
+    const std::vector<SmokeSource>& sources() const { return sources_; }
     // Marks the cells whose centres lie inside the shape solid (static obstacles).
     void addObstacle(const SmokeShape& shape);
+    // Marks solid the cells whose centres a voxelized mesh holds (core/mesh_voxelize.h, on this
+    // grid's cells); throws eikon::Error if the bits are of another resolution.
+    void addObstacle(const InsideBits& inside);
 
-    // One frame of 1/fps seconds in as many substeps as the CFL number asks.
+    // One frame of 1/fps seconds in as many substeps as the CFL number asks, the sources updated
+    // before each.
     SmokeStepStats advanceFrame();
-    // One substep of dt seconds.
+    // One substep of dt seconds with the sources as they are.
     SmokeStepStats step(float dt);
 
     const SmokeSettings& settings() const { return settings_; }
     const MacGrid& grid() const { return grid_; }
     MacGrid& grid() { return grid_; }  // initial conditions, tests
-    int frame() const { return frame_; }
+    int frame() const { return frame_; }  // frames stepped so far
     int stepCount() const { return steps_; }
 
 private:
@@ -94,6 +111,7 @@ private:
     SimulationClock clock_;
     MacGrid grid_;
     std::vector<SmokeSource> sources_;
+    SourceUpdate sourceUpdate_;
     int frame_ = 0;
     int steps_ = 0;
 };

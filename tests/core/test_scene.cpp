@@ -143,6 +143,18 @@ TEST_CASE("the shipped scenes hold what they say", "[scene]") {
         REQUIRE(scene.sources.size() == 2);
         CHECK(scene.receivers[0].position < scene.sources[1].center.y - scene.sources[1].radius);
     }
+    SECTION("smoke around a glass mesh: the rendered glass is the obstacle, the source moves") {
+        const eikon::Scene scene = eikon::loadScene((folder / "smoke_glass_mesh.json").string());
+        REQUIRE(scene.simulation);
+        REQUIRE(scene.simulation->obstacles.size() == 1);
+        CHECK(scene.simulation->obstacles[0].kind == eikon::SimShapeSpec::Kind::Mesh);
+        CHECK(scene.meshes[std::size_t(scene.simulation->obstacles[0].mesh)].name == "glass");
+        REQUIRE(scene.animation.size() == 1);
+        CHECK(scene.animation[0].target == "/simulation/sources/0/center");
+        // The source's path stays below the glass (centre y 0.75, radius 0.25).
+        for (std::size_t v = 1; v < scene.animation[0].values.size(); v += 3)
+            CHECK(scene.animation[0].values[v] + scene.simulation->sources[0].shape.radius < 0.5f);
+    }
 }
 
 TEST_CASE("the example in docs/scene-format.md parses", "[scene]") {

@@ -168,6 +168,103 @@ TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]
     fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5}, "ior": 1.33}])",
           "/animation/0/target", "moves with its container 'glass'",
           R"(, "animation": [{"target": "/meshes/1/translate", "times": [0], "values": [[0, 0, 0]]}])");
+    const std::string handles = R"("handles": [{"name": "base", "box": {"min": [-1, -1, -1], "max": [1, -0.5, 1]}},
+                                  {"name": "top", "sphere": {"center": [0, 1, 0], "radius": 0.3}}])";
+    const std::string arap = R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4,
+              "deformer": {"type": "arap", )";
+    fails(arap + R"("handles": []}}])", "/meshes/0/deformer/handles", "at least one handle");
+    fails(arap + R"("handles": [{"name": "h"}]}}])", "/meshes/0/deformer/handles/0/sphere",
+          "needs a region");
+    fails(arap + R"("handles": [{"name": "h", "sphere": {"center": [0, 0, 0], "radius": 1},
+              "box": {"min": [0, 0, 0], "max": [1, 1, 1]}}]}}])",
+          "/meshes/0/deformer/handles/0/box", "not both");
+    fails(arap + R"("handles": [{"name": "h", "sphere": {"center": [0, 0, 0], "radius": 0}}]}}])",
+          "/meshes/0/deformer/handles/0/sphere/radius", "> 0");
+    fails(arap + R"("handles": [{"name": "h", "sphere": {"center": [0, 0, 0], "radius": 1}},
+              {"name": "h", "sphere": {"center": [0, 1, 0], "radius": 1}}]}}])",
+          "/meshes/0/deformer/handles/1/name", "duplicate handle name");
+    fails(arap + R"("iterations": 0, )" + handles + "}}]", "/meshes/0/deformer/iterations", "1");
+    fails(arap + handles + "}}]", "/animation/0/target", "has no handle 2",
+          R"(, "animation": [{"target": "/meshes/0/deformer/handles/2/translate", "times": [0], "values": [[0, 0, 0]]}])");
+    fails(arap + handles + "}}]", "/animation/0/target", "translate or rotation, not 'scale'",
+          R"(, "animation": [{"target": "/meshes/0/deformer/handles/1/scale", "times": [0], "values": [[1, 1, 1]]}])");
+    fails(R"([{"name": "g", "file": "g.obj", "ior": 1.5}])", "/animation/0/target",
+          "has no ARAP deformer",
+          R"(, "animation": [{"target": "/meshes/0/deformer/handles/0/translate", "times": [0], "values": [[0, 0, 0]]}])");
+    fails(arap + handles + "}}]", "/simulation/obstacles/0/mesh", "dragged by ARAP handles",
+          R"(, "simulation": {"domain": {"min": [-2, -2, -2], "max": [2, 2, 2]}, "resolution": 8,
+              "obstacles": [{"mesh": "j"}]})");
+    {
+        Scene s = parseMeshes(arap + handles + "}}]",
+                              R"(, "animation": [{"target": "/meshes/0/deformer/handles/1/rotation",
+                                  "times": [0], "values": [[0, 0, 1, 0]]}])");
+        REQUIRE(s.meshes[0].arap);
+        const ArapSpec& a = *s.meshes[0].arap;
+        CHECK(a.iterations == 5);
+        REQUIRE(a.handles.size() == 2);
+        CHECK_FALSE(a.handles[0].sphere);
+        CHECK(a.handles[0].center == glm::vec3(0.0f, -0.75f, 0.0f));  // a box's pivot: its centre
+        CHECK(a.handles[1].radius == 0.3f);
+        std::string why;
+        const auto t = resolveAnimationTarget(s, "/meshes/0/deformer/handles/1/rotation", why);
+        REQUIRE(t);
+        CHECK(t->rotation);
+        const float q[4] = {0.0f, 0.0f, 2.0f, 0.0f};  // normalized when written
+        writeAnimationTarget(s, *t, q);
+        CHECK(s.meshes[0].arap->handles[1].rotation == glm::quat(0.0f, 0.0f, 0.0f, 1.0f));
+    }
     // Without meshes, sources and materials stay required.
     CHECK_THROWS_WITH(parseScene("{}", "m.json"), Catch::Contains("missing required key 'sources'"));
+}
+
+TEST_CASE("a smoke obstacle names a mesh that stands still, or the error says why",
+          "[scene][meshes][simulation]") {
+    const std::string meshes = R"([
+        {"name": "glass", "shape": {"type": "icosphere", "radius": 0.2}, "ior": 1.5},
+        {"name": "blob", "shape": {"type": "icosphere", "radius": 0.2}, "ior": 1.4,
+         "deformer": {"type": "jelly"}},
+        {"name": "pool", "shape": {"type": "water", "size": [1, 1], "depth": 0.2}, "ior": 1.33}])";
+    auto scene = [&](const std::string& obstacle, const std::string& animation = "") {
+        return R"(, "simulation": {"domain": {"min": [-1, 0, -1], "max": [1, 2, 1]},
+            "resolution": 8, "obstacles": [{"type": "sphere"}, )" +
+               obstacle + "]}" + animation;
+    };
+    const Scene ok = parseMeshes(meshes, scene(R"({"mesh": "glass"})"));
+    REQUIRE(ok.simulation->obstacles.size() == 2);
+    CHECK(ok.simulation->obstacles[1].kind == SimShapeSpec::Kind::Mesh);
+    CHECK(ok.simulation->obstacles[1].mesh == 0);
+    CHECK(ok.simulation->obstacles[1].jsonPath == "/simulation/obstacles/1");
+    // Animating the glass's optics moves nothing: still an obstacle.
+    CHECK_NOTHROW(parseMeshes(meshes, scene(R"({"mesh": "glass"})",
+                                            R"(, "animation": [{"target": "/meshes/0/ior",
+                                               "times": [0, 1], "values": [1.5, 1.6]}])")));
+
+    auto fails = [&](const std::string& text, const std::string& where, const std::string& what) {
+        INFO(text);
+        CHECK_THROWS_WITH(parseMeshes(meshes, text),
+                          Catch::Contains("m.json:" + where) && Catch::Contains(what));
+    };
+    fails(scene(R"({"mesh": "glas"})"), "/simulation/obstacles/1/mesh",
+          "no mesh named 'glas' in \"meshes\" (it has 'glass', 'blob', 'pool')");
+    fails(scene(R"({"mesh": "blob"})"), "/simulation/obstacles/1/mesh",
+          "mesh 'blob' moves by its own simulation (jelly); a smoke obstacle must stand still");
+    fails(scene(R"({"mesh": "pool"})"), "/simulation/obstacles/1/mesh",
+          "mesh 'pool' moves by its own simulation (water)");
+    fails(scene(R"({"mesh": "glass", "type": "box"})"), "/simulation/obstacles/1/type",
+          "unknown key 'type' for a mesh obstacle");
+    fails(scene(R"({"mesh": "glass"})", R"(, "lights": [{"type": "point", "position": [0, 2, 0]}],
+              "animation": [{"target": "/lights/0/intensity", "times": [0], "values": [1]},
+              {"target": "/meshes/0/translate", "times": [0, 1],
+               "values": [[0, 0, 0], [0, 1, 0]]}])"),
+          "/simulation/obstacles/1/mesh",
+          "mesh 'glass' is moved by /animation/1 (/meshes/0/translate); a smoke obstacle must "
+          "stand still");
+    CHECK_THROWS_WITH(
+        parseScene(R"({"sources": [{"type": "sphere", "field": "density"}],
+            "materials": [{"name": "smoke", "scattering": [1, 1, 1]}],
+            "simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 8,
+            "obstacles": [{"mesh": "glass"}]}})",
+                   "n.json"),
+        Catch::Contains("n.json:/simulation/obstacles/0/mesh") &&
+            Catch::Contains("the scene has none"));
 }

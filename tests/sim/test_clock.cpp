@@ -20,6 +20,17 @@ TEST_CASE("clock maps frames to time and picks substeps by CFL", "[clock]") {
     CHECK(loose.substepsFor(240.0, 1.0) == 2);
 }
 
+TEST_CASE("substeps of frame f end between the times of frames f - 1 and f", "[clock]") {
+    SimulationClock clock(24.0, 1.0);
+    // Frame 5's three substeps end at 4⅓, 4⅔ and 5 frames; the last exactly at the frame's time,
+    // bit for bit, so a simulated frame and a rendered one evaluate tracks at the same instant.
+    CHECK(clock.timeOfSubstep(5, 0, 3) == Approx((4.0 + 1.0 / 3.0) / 24.0));
+    CHECK(clock.timeOfSubstep(5, 1, 3) == Approx((4.0 + 2.0 / 3.0) / 24.0));
+    CHECK(clock.timeOfSubstep(5, 2, 3) == clock.timeOfFrame(5));
+    CHECK(clock.timeOfSubstep(1, 0, 1) == clock.timeOfFrame(1));
+    CHECK(clock.timeOfSubstep(0, 6, 7) == clock.timeOfFrame(0));
+}
+
 TEST_CASE("clock rejects bad settings and survives a blow-up", "[clock]") {
     CHECK_THROWS_AS(SimulationClock(0.0, 1.0), eikon::Error);
     CHECK_THROWS_AS(SimulationClock(24.0, -1.0), eikon::Error);

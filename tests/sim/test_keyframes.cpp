@@ -178,3 +178,72 @@ TEST_CASE("animation errors name the track and say what was expected", "[animati
              {"target": "/lights/0/intensity", "times": [1], "values": [2]})",
           "/animation/1/target", "animated already by /animation/0");
 }
+
+TEST_CASE("smoke source tracks move and change the simulation's sources", "[animation]") {
+    const std::string head = R"({"sources": [{"type": "vdb_sequence", "file": "c/s_####.vdb"}],
+        "materials": [{"name": "smoke", "scattering": [1, 1, 1]}],
+        "simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 8,
+          "sources": [{"type": "sphere", "center": [0.5, 0.2, 0.5], "radius": 0.1},
+                      {"type": "box", "min": [0, 0, 0], "max": [0.2, 0.1, 0.4]}]},
+        "animation": [)";
+    SECTION("values land in the sources, a box keeping its size around its new centre") {
+        const Scene base = parseScene(head + R"(
+            {"target": "/simulation/sources/0/center", "times": [0, 2],
+             "values": [[0.5, 0.2, 0.5], [0.7, 0.2, 0.5]]},
+            {"target": "/simulation/sources/0/velocity", "times": [0], "values": [[0, 1, 0]]},
+            {"target": "/simulation/sources/0/density_rate", "times": [0, 2], "values": [2, 0]},
+            {"target": "/simulation/sources/0/temperature_rate", "times": [0], "values": [-3]},
+            {"target": "/simulation/sources/0/velocity_rate", "times": [0], "values": [5]},
+            {"target": "/simulation/sources/1/center", "times": [0], "values": [[1, 1, 1]]}]})",
+                                      "s.json");
+        Scene a = base;
+        sim::SceneAnimation(base).apply(1.0, a);
+        const SmokeSourceSpec& s0 = a.simulation->sources[0];
+        CHECK(s0.shape.center.x == Approx(0.6f));
+        CHECK(s0.velocity == glm::vec3(0, 1, 0));
+        CHECK(s0.densityRate == Approx(1.0f));
+        CHECK(s0.temperatureRate == -3.0f);  // a cold source, as the parser allows
+        CHECK(s0.velocityRate == 5.0f);
+        const SimShapeSpec& box = a.simulation->sources[1].shape;
+        const glm::vec3 lo(0.9f, 0.95f, 0.8f), hi(1.1f, 1.05f, 1.2f);
+        for (int a = 0; a < 3; ++a) {
+            CHECK(box.boxMin[a] == Approx(lo[a]));
+            CHECK(box.boxMax[a] == Approx(hi[a]));
+        }
+    }
+    SECTION("a rate that interpolation overshoots below 0 is clamped to 0") {
+        const Scene base = parseScene(head + R"(
+            {"target": "/simulation/sources/0/density_rate", "interpolation": "cubicspline",
+             "times": [0, 1], "values": [0, 0], "in_tangents": [0, 0], "out_tangents": [-5, 0]}]})",
+                                      "s.json");
+        Scene a = base;
+        sim::SceneAnimation(base).apply(0.5, a);
+        CHECK(a.simulation->sources[0].densityRate == 0.0f);
+    }
+    auto fails = [&](const std::string& track, const std::string& where, const std::string& what) {
+        INFO(track);
+        CHECK_THROWS_WITH(parseScene(head + track + "]}", "s.json"),
+                          Catch::Contains("s.json:" + where) && Catch::Contains(what));
+    };
+    fails(R"({"target": "/simulation/sources/2/center", "times": [0], "values": [[0, 0, 0]]})",
+          "/animation/0/target", "no simulation source 2 (the simulation has 2)");
+    fails(R"({"target": "/simulation/sources/0/radius", "times": [0], "values": [1]})",
+          "/animation/0/target", "a smoke source animates center, velocity, density_rate");
+    fails(R"({"target": "/simulation/obstacles/0/center", "times": [0], "values": [[0, 0, 0]]})",
+          "/animation/0/target", "expected /simulation/sources/<index>/<key>");
+    fails(R"({"target": "/simulation/sources/0/density_rate", "times": [0], "values": [-1]})",
+          "/animation/0/values/0", ">= 0");
+    fails(R"({"target": "/simulation/sources/0/velocity_rate", "times": [0], "values": [-1]})",
+          "/animation/0/values/0", ">= 0");
+    fails(R"({"target": "/simulation/sources/0/velocity", "times": [0], "values": [1]})",
+          "/animation/0/values/0", "an array of 3 numbers");
+    CHECK_THROWS_WITH(
+        parseScene(R"({"lights": [{"type": "point", "position": [0, 2, 0]}],
+            "meshes": [{"name": "glass", "shape": {"type": "icosphere", "radius": 0.5},
+                        "ior": 1.5}],
+            "animation": [{"target": "/simulation/sources/0/center", "times": [0],
+                           "values": [[0, 0, 0]]}]})",
+                   "n.json"),
+        Catch::Contains("n.json:/animation/0/target") &&
+            Catch::Contains("the scene has no \"simulation\" section"));
+}
