@@ -361,3 +361,38 @@ TEST_CASE("eikon render fills the shared wine glass with a liquid that rises wit
     checkOneLineError(ball, dir + "/wine_0.5.json:/meshes/1: ");
     CHECK(contains(ball.err, "no cavity"));
 }
+
+TEST_CASE("eikon render drags a mesh by keyframed ARAP handles", "[cli][arap]") {
+    const std::string dir = scratchDir("cli_render_arap");
+    const std::string scene = dir + "/squeeze.json";
+    writeFile(scene, R"({
+  "volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "resolution": 16},
+  "meshes": [{"name": "ball", "shape": {"type": "icosphere", "radius": 0.5, "subdivisions": 2},
+              "emission": [1, 0.6, 0.3], "absorption": [2, 2, 2],
+              "deformer": {"type": "arap", "handles": [
+                {"name": "base", "box": {"min": [-1, -1, -1], "max": [1, -0.3, 1]}},
+                {"name": "top", "sphere": {"center": [0, 0.5, 0], "radius": 0.2}}]}}],
+  "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
+  "render": {"width": 24, "height": 16},
+  "output": {"name": "ball", "png": true},
+  "time": {"fps": 12, "frame_start": 0, "frame_end": 3},
+  "animation": [{"target": "/meshes/0/deformer/handles/1/translate",
+                 "times": [0, 0.25], "values": [[0, 0, 0], [0.3, -0.3, 0]]}]
+})");
+    const RunResult r = runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/a"), dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK(readFile(dir + "/a/ball_0000.png") != readFile(dir + "/a/ball_0003.png"));  // squeezed
+    const RunResult alone =
+        runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/b") + " --frames 3-3", dir);
+    REQUIRE(alone.exitCode == 0);
+    CHECK(readFile(dir + "/b/ball_0003.png") == readFile(dir + "/a/ball_0003.png"));
+
+    // A handle whose region misses the mesh: one line naming it.
+    std::string text = readFile(scene);
+    text.replace(text.find("[0, 0.5, 0], \"radius\": 0.2"), 26, "[0, 3, 0], \"radius\": 0.2");
+    writeFile(scene, text);
+    const RunResult miss = runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/c"), dir);
+    checkOneLineError(miss, scene + ":/meshes/0/deformer/handles/1: ");
+    CHECK(contains(miss.err, "holds no vertex"));
+}
