@@ -36,8 +36,8 @@ struct RenderOptions {
     float shadowStep = 0.0f;
 };
 
-Scene sceneFor(const RenderOptions& o) {
-    Scene scene = sceneFromInput(o.input, o.outputDir, o.size);
+// The command line's choices on top of the scene as written.
+void applyOptions(const RenderOptions& o, Scene& scene) {
     if (!o.frames.empty()) parseFrames(o.frames, scene.time);
     if (o.exr) scene.output.exr = true;
     if (o.step > 0.0f) scene.render.stepVoxels = o.step;
@@ -45,7 +45,6 @@ Scene sceneFor(const RenderOptions& o) {
     if (o.shadows == "volume") scene.render.shadows = ShadowMode::Volume;
     if (o.shadows == "swept") scene.render.shadows = ShadowMode::Swept;
     if (o.shadows == "marched") scene.render.shadows = ShadowMode::Marched;
-    return scene;
 }
 
 void printStats(const std::vector<StageTime>& stages, double writeMs, bool softwareGl) {
@@ -82,12 +81,15 @@ void printPhotonStats(const FrameRenderer& renderer, const std::vector<StageTime
 }
 
 int runRender(const RenderOptions& o) {
-    const Scene scene = sceneFor(o);
+    Scene scene = sceneFromInput(o.input, o.outputDir, o.size);
+    // Before --frames: a live simulation starts at the frame_start the scene gives, whichever
+    // frames are rendered. It reads the mesh files too: a bad one fails before anything else.
+    SceneDriver driver(scene);
+    applyOptions(o, scene);
     std::error_code ec;
     fs::create_directories(scene.output.directory, ec);
     if (ec) throw Error(scene.output.directory, "cannot create the output folder: " + ec.message());
 
-    SceneDriver driver(scene);  // reads the mesh files: a bad one fails before anything else
     BackendChoice choice = chooseBackend(o.backend);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());
     std::printf("%s\n", choice.description.c_str());

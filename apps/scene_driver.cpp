@@ -1,7 +1,10 @@
 #include "apps/scene_driver.h"
 
 #include "core/mesh_placement.h"
+#include "core/error.h"
 #include "sim/container_fill.h"
+#include "sim/smoke_from_scene.h"
+#include "sim/smoke_publish.h"
 #include "sim/refractive_mesh.h"
 
 namespace eikon::app {
@@ -42,6 +45,29 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
         }
         if (s.water || s.jelly || s.arap) simulated_.push_back(std::move(s));
     }
+    for (const SourceSpec& source : scene.sources)
+        if (source.type == SourceType::Simulation && !smokeScene_)
+            smokeScene_ = std::make_unique<Scene>(scene);
+}
+
+void SceneDriver::stepSmoke(FrameRenderer& renderer, int frame) {
+    const Scene& scene = *smokeScene_;
+    const int first = scene.time.frameStart;
+    if (frame < first)
+        throw Error(scene.path + ":/time/frame_start",
+                    "the simulation starts at frame " + std::to_string(first) + "; frame " +
+                        std::to_string(frame) + " comes before it");
+    if (smoke_ && smokeFrame_ == frame) return;
+    if (!smoke_ || frame < smokeFrame_) {
+        smoke_ = std::make_unique<sim::SmokeSolver>(sim::smokeSolverFrom(scene));
+        smokeFrame_ = first - 1;
+    }
+    while (smokeFrame_ < frame) {
+        smoke_->advanceFrame();
+        ++smokeFrame_;
+    }
+    sim::publishSmoke(smoke_->grid(), renderer.publishedFields(),
+                      scene.path + ": simulation frame " + std::to_string(frame));
 }
 
 void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
@@ -50,6 +76,7 @@ void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
         fixedMeshesSet_ = true;
     }
     if (!animation_.empty()) animation_.apply(clock_.timeOfFrame(frame), renderer.scene());
+    if (smokeScene_) stepSmoke(renderer, frame);
     for (Simulated& s : simulated_) {
         if (s.frameSet == frame) continue;
         if (s.water) {

@@ -6,7 +6,8 @@
 // start at frame 0, so a
 // frame is the same however it is reached. Mesh files are read once, here (sim/refractive_mesh.h:
 // holes closed as the scene asks, then checked closed), since the renderer cannot read them, and
-// liquids are made once from their containers (sim/container_fill.h).
+// liquids are made once from their containers (sim/container_fill.h). A scene whose source is its
+// own smoke simulation has it stepped here and published to the renderer every new frame.
 #include <memory>
 #include <utility>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "sim/arap_drag.h"
 #include "sim/clock.h"
 #include "sim/jelly.h"
+#include "sim/smoke_solver.h"
 #include "sim/water_surface.h"
 
 namespace eikon::app {
@@ -40,6 +42,12 @@ private:
         int frameSet = -1;  // the frame whose mesh the renderer has
     };
     std::vector<Simulated> simulated_;
+    // The scene's smoke, stepped live when a source of type "simulation" shows it: frame f holds
+    // the state after f − frame_start + 1 frames, as in `eikon simulate`'s cache.
+    void stepSmoke(FrameRenderer& renderer, int frame);
+    std::unique_ptr<Scene> smokeScene_;  // as loaded: the solver is rebuilt from it on going back
+    std::unique_ptr<sim::SmokeSolver> smoke_;
+    int smokeFrame_ = 0;  // the frame the solver's state is, once smoke_ exists
     // Meshes made here that no simulation moves (read from files, liquids filling their
     // containers): handed to the renderer once.
     std::vector<std::pair<size_t, TriangleMesh>> fixedMeshes_;

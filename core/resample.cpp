@@ -68,6 +68,10 @@ RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields,
 
     RenderVolume v;
     if (scene.volume.autoBounds) {
+        // A live simulation starts empty and spreads: its whole domain, so the volume holds still.
+        for (const SourceSpec& source : scene.sources)
+            if (source.type == SourceType::Simulation && scene.simulation)
+                v.bounds = v.bounds.unite(scene.simulation->domain);
         for (size_t m : fieldMaterials)
             v.bounds = v.bounds.unite(materialField(scene, fields, m).activeWorldBounds());
         if (!v.bounds.valid() && !meshes.valid())

@@ -289,10 +289,13 @@ SourceSpec readSource(const Value& value, const fs::path& sceneDirectory) {
     source.jsonPath = value.pointer();
     // The type decides which other keys belong, so it is read first.
     const std::string type =
-        object.required("type", "\"vdb\", \"vdb_sequence\", \"sphere\" or \"box\"")
-            .choice({"vdb", "vdb_sequence", "sphere", "box"});
+        object
+            .required("type", "\"vdb\", \"vdb_sequence\", \"sphere\", \"box\" or \"simulation\"")
+            .choice({"vdb", "vdb_sequence", "sphere", "box", "simulation"});
     object.setKind("a " + type + " source");
-    if (type == "vdb" || type == "vdb_sequence") {
+    if (type == "simulation") {
+        source.type = SourceType::Simulation;  // the scene's "simulation" is checked at the end
+    } else if (type == "vdb" || type == "vdb_sequence") {
         source.type = type == "vdb" ? SourceType::Vdb : SourceType::VdbSequence;
         readFileSource(object, sceneDirectory, source);
     } else if (type == "sphere") {
@@ -620,6 +623,10 @@ void checkLabelledFields(const Value& materials, const Scene& scene) {
     std::vector<std::string> written;
     for (const SourceSpec& source : scene.sources) {
         if (source.type == SourceType::Vdb || source.type == SourceType::VdbSequence) return;
+        if (source.type == SourceType::Simulation) {
+            written.insert(written.end(), {"density", "temperature", "velocity"});
+            continue;
+        }
         written.push_back(source.field);
     }
     for (std::size_t m = 0; m < scene.materials.size(); ++m) {
@@ -696,6 +703,11 @@ Scene readScene(const Value& root, const std::string& file) {
     if (auto animation = object.optional("animation"))
         scene.animation = readAnimation(*animation, scene);
     checkObstaclesStandStill(scene);
+    for (const SourceSpec& source : scene.sources)
+        if (source.type == SourceType::Simulation && !scene.simulation)
+            throw Error(file + ":" + source.jsonPath + "/type",
+                        "a \"simulation\" source shows the scene's smoke simulation, and the scene "
+                        "has no \"simulation\" section");
     object.finish();
     return scene;
 }

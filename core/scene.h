@@ -30,7 +30,10 @@ struct VolumeSettings {
     int maxResolution = 256;
 };
 
-enum class SourceType { Vdb, VdbSequence, Sphere, Box };
+// Simulation: the fields of the scene's own smoke simulation (density, temperature, velocity),
+// stepped live frame by frame by the program rendering the scene (apps/scene_driver.h) instead
+// of read from a cache; the scene must have a "simulation" section.
+enum class SourceType { Vdb, VdbSequence, Sphere, Box, Simulation };
 
 // How a procedural shape's value varies inside it (core/procedural.h has the formulas).
 // Uniform: `value` everywhere. Luneburg (spheres): value · (sqrt(2 − (r/R)²) − 1), so that a

@@ -46,6 +46,8 @@ void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
             case SourceType::Box:
                 key = "procedural";
                 break;
+            case SourceType::Simulation:
+                continue;  // the program stepping the simulation publishes its fields
         }
         if (loadedFile_.count(s) && loadedFile_[s] == key) continue;
         const std::string origin = scene_.path + ":" + src.jsonPath;
@@ -62,6 +64,8 @@ void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
             case SourceType::Sphere:
             case SourceType::Box:
                 addProcedural(src, origin, fields);
+                break;
+            case SourceType::Simulation:
                 break;
         }
         loadedFile_[s] = key;

@@ -54,6 +54,9 @@ public:
     Scene& scene() { return scene_; }
     const RenderVolume& volume() const { return volume_; }
     const FieldRegistry& fields() const { return fields_; }
+    // Where the program rendering the scene publishes fields it computes itself each frame (a
+    // live smoke simulation: sources of type Simulation); a new version re-uploads the field.
+    FieldRegistry& publishedFields() { return fields_; }
     Backend backend() const { return backend_; }
     const GlContext* context() const { return gl_; }
     // Stage times summed since the last call (load, resample, upload, light, view, readback).

@@ -146,6 +146,8 @@ TEST_CASE("the shipped scenes hold what they say", "[scene]") {
     SECTION("smoke around a glass mesh: the rendered glass is the obstacle, the source moves") {
         const eikon::Scene scene = eikon::loadScene((folder / "smoke_glass_mesh.json").string());
         REQUIRE(scene.simulation);
+        REQUIRE(scene.sources.size() == 1);
+        CHECK(scene.sources[0].type == eikon::SourceType::Simulation);  // stepped live
         REQUIRE(scene.simulation->obstacles.size() == 1);
         CHECK(scene.simulation->obstacles[0].kind == eikon::SimShapeSpec::Kind::Mesh);
         CHECK(scene.meshes[std::size_t(scene.simulation->obstacles[0].mesh)].name == "glass");
@@ -155,6 +157,24 @@ TEST_CASE("the shipped scenes hold what they say", "[scene]") {
         for (std::size_t v = 1; v < scene.animation[0].values.size(); v += 3)
             CHECK(scene.animation[0].values[v] + scene.simulation->sources[0].shape.radius < 0.5f);
     }
+}
+
+TEST_CASE("a simulation source needs the scene's simulation", "[scene]") {
+    const std::string materials = R"("materials": [{"name": "smoke", "field": "density", "scattering": [1, 1, 1]},
+        {"name": "air", "field": "temperature", "gladstone_dale": 0.01}])";
+    CHECK_THROWS_WITH(
+        eikon::parseScene(R"({"sources": [{"type": "simulation"}], )" + materials + "}", "s.json"),
+        Catch::Contains("s.json:/sources/0/type") && Catch::Contains("no \"simulation\" section"));
+    const eikon::Scene scene = eikon::parseScene(
+        R"({"sources": [{"type": "simulation"}], )" + materials +
+            R"(, "simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 8}})",
+        "s.json");
+    CHECK(scene.sources[0].type == eikon::SourceType::Simulation);
+    CHECK_THROWS_WITH(
+        eikon::parseScene(R"({"sources": [{"type": "simulation", "file": "a.vdb"}], )" + materials +
+                              R"(, "simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 8}})",
+                          "s.json"),
+        Catch::Contains("s.json:/sources/0/file") && Catch::Contains("unknown key"));
 }
 
 TEST_CASE("the example in docs/scene-format.md parses", "[scene]") {
