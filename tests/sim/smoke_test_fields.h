@@ -55,6 +55,32 @@ inline double totalDensity(const sim::MacGrid& g) {
 }
 
 // FNV-1a over the bits of every float of the state.
+// Where a plume's smoke is around a solid of radius `radius` centred at `centre`: inside the
+// solid cells, in a ring 0.15 wide just outside it level with its upper half (smoke that got
+// round it), and in all.
+struct SmokeAroundSolid {
+    double insideSolid = 0.0, besideAbove = 0.0, total = 0.0;
+};
+
+inline SmokeAroundSolid smokeAroundSolid(const sim::MacGrid& g, glm::vec3 centre, float radius) {
+    SmokeAroundSolid s;
+    const glm::ivec3 n = g.resolution();
+    for (int k = 0; k < n.z; ++k)
+        for (int j = 0; j < n.y; ++j)
+            for (int i = 0; i < n.x; ++i) {
+                const glm::vec3 p = g.domain.cellCenter(i, j, k);
+                s.total += g.density(i, j, k);
+                if (g.isSolid(i, j, k)) {
+                    s.insideSolid += g.density(i, j, k);
+                    continue;
+                }
+                const float ring = std::hypot(p.x - centre.x, p.z - centre.z);
+                if (p.y > centre.y && ring > radius && ring < radius + 0.15f)
+                    s.besideAbove += g.density(i, j, k);
+            }
+    return s;
+}
+
 inline std::uint64_t hashState(const sim::MacGrid& g) {
     std::uint64_t h = 1469598103934665603ull;
     auto mix = [&](const sim::Array3& a) {

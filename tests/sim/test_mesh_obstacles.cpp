@@ -15,6 +15,7 @@
 #include "sim/pressure_solver.h"
 #include "sim/refractive_mesh.h"
 #include "sim/smoke_from_scene.h"
+#include "smoke_test_fields.h"
 #include "support/test_paths.h"
 
 using namespace eikon;
@@ -180,21 +181,10 @@ TEST_CASE("a plume rises around a glass mesh obstacle, never through it",
     CHECK(fluidFlux > 0.0);
     CHECK(sim::maxDivergence(g) <= 1e-3);
 
-    double insideSolid = 0.0, besideAbove = 0.0, total = 0.0;
-    const glm::vec3 c(0.5f, 0.75f, 0.5f);
-    for (int k = 0; k < n.z; ++k)
-        for (int j = 0; j < n.y; ++j)
-            for (int i = 0; i < n.x; ++i) {
-                const glm::vec3 p = g.domain.cellCenter(i, j, k);
-                total += g.density(i, j, k);
-                if (g.isSolid(i, j, k)) {
-                    insideSolid += g.density(i, j, k);
-                    continue;
-                }
-                // Level with the glass's upper half, in a ring just outside it.
-                const float ring = std::hypot(p.x - c.x, p.z - c.z);
-                if (p.y > c.y && ring > 0.18f && ring < 0.33f) besideAbove += g.density(i, j, k);
-            }
+    // Level with the glass's upper half, in a ring just outside it (radius 0.18).
+    const test::SmokeAroundSolid around = test::smokeAroundSolid(g, {0.5f, 0.75f, 0.5f}, 0.18f);
+    const double insideSolid = around.insideSolid, besideAbove = around.besideAbove,
+                 total = around.total;
     WARN("glass mesh plume: density beside the upper half " << besideAbove << " of " << total);
     // As for the analytic sphere (test_smoke_solver.cpp): 0.1 % of all the smoke there says the
     // plume got round the glass rather than a trace diffusing there.

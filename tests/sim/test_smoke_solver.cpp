@@ -99,24 +99,10 @@ TEST_CASE("a buoyant plume rises around a solid sphere, never into it", "[smoke]
     WARN("plume 24x32x24, 24 frames: " << stats.substeps << " substeps, max CFL " << stats.cfl
                                        << ", CG iterations max " << stats.maxCgIterations
                                        << ", residual " << stats.cgResidual);
-    double insideSolid = 0.0, besideAbove = 0.0, total = 0.0;
-    const glm::ivec3 n = g.resolution();
-    for (int k = 0; k < n.z; ++k)
-        for (int j = 0; j < n.y; ++j)
-            for (int i = 0; i < n.x; ++i) {
-                const glm::vec3 p = g.domain.cellCenter(i, j, k);
-                total += g.density(i, j, k);
-                if (g.isSolid(i, j, k)) {
-                    insideSolid += g.density(i, j, k);
-                    continue;
-                }
-                // Level with the sphere's upper half, in a ring just outside it.
-                const glm::vec3 c = kPlumeObstacle.center;
-                const float ring = std::hypot(p.x - c.x, p.z - c.z);
-                if (p.y > c.y && ring > kPlumeObstacle.radius &&
-                    ring < kPlumeObstacle.radius + 0.15f)
-                    besideAbove += g.density(i, j, k);
-            }
+    const test::SmokeAroundSolid around =
+        test::smokeAroundSolid(g, kPlumeObstacle.center, kPlumeObstacle.radius);
+    const double insideSolid = around.insideSolid, besideAbove = around.besideAbove,
+                 total = around.total;
     WARN("density in the ring beside the sphere's upper half: " << besideAbove << " of " << total);
     // Measured ~1.7% of all the smoke after one second; 0.1% says the plume got round the
     // sphere rather than a trace diffusing there.
