@@ -97,11 +97,11 @@ TEST_CASE("dragging a bar's tip bends it: handles exact, the rest follows withou
     CHECK(axisLength < 1.015 * chord);
     // The surface's strain is the bending's: a beam held level at both ends and offset by δ over
     // its free length L curves at most 6δ/L² (at the ends), stretching its outer fibres by that
-    // times the radius. ARAP, a surface model, lands within 15 % of it.
+    // times the radius. ARAP, a surface model, lands within 5 % of it (0.7 % measured).
     const double beamStrain = 6.0 * 0.3 / (0.88 * 0.88) * 0.1;
     const double strain = worstEdgeStrain(rest, bent);
     INFO("worst edge strain " << strain << ", beam theory " << beamStrain);
-    CHECK(std::abs(strain / beamStrain - 1.0) < 0.15);
+    CHECK(std::abs(strain / beamStrain - 1.0) < 0.05);
 }
 
 TEST_CASE("a frame is the same however it is reached", "[arap_drag]") {
