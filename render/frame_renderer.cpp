@@ -106,6 +106,9 @@ std::vector<unsigned char> photonInputs(const ViewSetup& setup,
     appendBytes(key, &settings.minStepVoxels, sizeof(settings.minStepVoxels));
     appendBytes(key, &settings.fluxThreshold, sizeof(settings.fluxThreshold));
     appendBytes(key, &settings.maxSteps, sizeof(settings.maxSteps));
+    // The stop rule is checked once per round, so the round size changes what it cuts.
+    appendBytes(key, &settings.stepsPerRound, sizeof(settings.stepsPerRound));
+    appendBytes(key, &settings.stopFraction, sizeof(settings.stopFraction));
     appendBytes(key, &settings.seed, sizeof(settings.seed));
     appendBytes(key, &settings.frame, sizeof(settings.frame));
     return key;

@@ -170,6 +170,15 @@ TEST_CASE("photon lighting: a camera move traces no photons, a light change does
         renderer.render(0);
         CHECK(renderer.photonUpdates() == 3);
         CHECK(renderer.gradientUpdates() == 1);
+
+        // The march's round size and stop rule decide which photons are cut: photons rerun.
+        renderer.scene().render.photons.stopFraction = 0.01f;
+        renderer.render(0);
+        CHECK(renderer.photonUpdates() == 4);
+        renderer.scene().render.photons.stepsPerRound = 5;
+        renderer.render(0);
+        CHECK(renderer.photonUpdates() == 5);
+        CHECK(renderer.gradientUpdates() == 1);
     }
 }
 
