@@ -307,6 +307,16 @@ int64_t FrameRenderer::lastPhotonsTraced() const {
     return photonsCpu_.photonsTraced;
 }
 
+int64_t FrameRenderer::lastPhotonsCut() const {
+    if (backend_ == Backend::Gpu) return photonsGpu_ ? photonsGpu_->lastPhotonsCut() : 0;
+    return photonsCpu_.photonsCut;
+}
+
+int FrameRenderer::lastPhotonRounds() const {
+    if (backend_ == Backend::Gpu) return photonsGpu_ ? photonsGpu_->lastRounds() : 0;
+    return photonsCpu_.rounds;
+}
+
 PhotonRadianceCpu FrameRenderer::photonVolumes() const {
     if (backend_ == Backend::Gpu)
         return photonsGpu_ ? photonsGpu_->download() : PhotonRadianceCpu{};

@@ -34,6 +34,8 @@ PhotonRadianceCpu computePhotonRadianceCpu(const ViewSetup& setup,
     out.receiverMap = std::move(traced.receiverMap);
     out.steps = traced.steps;
     out.photonsTraced = traced.photonsTraced;
+    out.photonsCut = traced.photonsCut;
+    out.rounds = traced.rounds;
     return out;
 }
 
