@@ -239,13 +239,9 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
         glDispatchCompute(1, 1, 1);
         glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
                         GL_BUFFER_UPDATE_BARRIER_BIT);
-        // After rounds 1, 2, 4, 8, ... the host reads the count back, to stop issuing rounds that
-        // would have nothing to march: a handful of read-backs per trace rather than one per
-        // round, and at most as many empty rounds as rounds with photons.
-        const int done = round + 1;
-        if ((done & (done - 1)) == 0 && done < plan.rounds &&
-            readWords(rounds_, EK_ROUND_COUNT + 1 - listIn, 1)[0] == 0)
-            break;
+        // No read-back to end the loop early: rounds after the last photon ended dispatch zero
+        // groups. Reading the count back after rounds 1, 2, 4, 8, ... did not measurably pay on
+        // llvmpipe (BENCHMARKS.md, photon rounds), so the host never waits on the march.
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);

@@ -26,9 +26,9 @@ public:
     // field volumes (already uploaded), refraction the ∇n and octree volumes already computed
     // from them, and the params SSBO is already bound at binding 0. Reads the generated photons
     // back once (the emitted power sets the fixed-point scales before anything is deposited, as
-    // in the CPU twin), marches them in rounds with the active photons compacted on the GPU
-    // (shared/photon_rounds.h), reading a count back only after rounds 1, 2, 4, 8, ...; the
-    // results stay on the GPU until download(). Timer stage: "photons".
+    // in the CPU twin), then marches them in rounds with the active photons compacted on the GPU
+    // (shared/photon_rounds.h) without reading anything back; the results stay on the GPU until
+    // download(). Timer stage: "photons".
     void trace(const ViewSetup& setup, VolumeTextures& fields,
                const RefractionVolumesGpu& refraction, const PhotonSettings& settings = {},
                GpuStageTimer* timer = nullptr);
