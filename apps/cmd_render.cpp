@@ -74,10 +74,13 @@ void printPhotonStats(const FrameRenderer& renderer, const std::vector<StageTime
     for (const StageTime& s : stats)
         if (s.name == "photons") ms += std::max(s.gpuMs, s.cpuMs);
     const int64_t photons = renderer.lastPhotonsTraced();
-    std::printf("  photons: %lld traced, %lld steps (%.1f per photon), %.2f M steps/s\n",
-                static_cast<long long>(photons), static_cast<long long>(steps),
-                photons > 0 ? double(steps) / double(photons) : 0.0,
-                ms > 0.0 ? double(steps) / (ms * 1e3) : 0.0);
+    std::printf(
+        "  photons: %lld traced, %lld steps (%.1f per photon), %.2f M steps/s; %lld cut, %d "
+        "rounds\n",
+        static_cast<long long>(photons), static_cast<long long>(steps),
+        photons > 0 ? double(steps) / double(photons) : 0.0,
+        ms > 0.0 ? double(steps) / (ms * 1e3) : 0.0,
+        static_cast<long long>(renderer.lastPhotonsCut()), renderer.lastPhotonRounds());
 }
 
 int runRender(const RenderOptions& o) {

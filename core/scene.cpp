@@ -512,6 +512,8 @@ EnvironmentSpec readEnvironment(const Value& value, const fs::path& sceneDirecto
 
 // Photons per side beyond this would take minutes per light on a CPU and overflow int indices.
 constexpr std::int64_t kMaxPhotonsPerSide = 8192;
+// More steps per round than any step cap (16 crossings of an 8192-voxel box): one round.
+constexpr std::int64_t kMaxStepsPerRound = 1 << 20;
 
 PhotonRenderSettings readPhotons(const Value& value) {
     Object object(value, "the photon settings");
@@ -530,6 +532,12 @@ PhotonRenderSettings readPhotons(const Value& value) {
     }
     if (auto threshold = object.optional("flux_threshold")) {
         photons.fluxThreshold = threshold->floatNumber(Range::closedOpen(0.0, 1.0));
+    }
+    if (auto fraction = object.optional("stop_fraction")) {
+        photons.stopFraction = fraction->floatNumber(Range::closedOpen(0.0, 1.0));
+    }
+    if (auto steps = object.optional("steps_per_round")) {
+        photons.stepsPerRound = static_cast<int>(steps->integer(1, kMaxStepsPerRound));
     }
     if (auto kappa = object.optional("kappa_tolerance")) {
         photons.kappaTolerance = kappa->floatNumber(Range::atLeast(0.0));

@@ -279,6 +279,10 @@ struct PhotonRenderSettings {
     int perSide = 128;            // N: N×N photons per light (six N×N faces for a light inside)
     float minStepVoxels = 1.0f;   // Δs_min of the adaptive march, in voxels
     float fluxThreshold = 1e-4f;  // a photon is dropped below this fraction of its initial flux
+    // The march stops once fewer than this fraction of the photons are active after a round of
+    // stepsPerRound steps (render/photon_tracing.h PhotonSettings); 0: never.
+    float stopFraction = 1e-3f;
+    int stepsPerRound = 32;
     // Optical depth by which extinction may vary across an octree node that photons cross in one
     // step (render/refraction_volume.h OctreeSettings::kappaTolerance); 0: it does not limit
     // steps, as in Sun et al. 0.1 (BENCHMARKS.md): 65x less image error than 0 on the glass

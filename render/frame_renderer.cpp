@@ -106,6 +106,9 @@ std::vector<unsigned char> photonInputs(const ViewSetup& setup,
     appendBytes(key, &settings.minStepVoxels, sizeof(settings.minStepVoxels));
     appendBytes(key, &settings.fluxThreshold, sizeof(settings.fluxThreshold));
     appendBytes(key, &settings.maxSteps, sizeof(settings.maxSteps));
+    // The stop rule is checked once per round, so the round size changes what it cuts.
+    appendBytes(key, &settings.stepsPerRound, sizeof(settings.stepsPerRound));
+    appendBytes(key, &settings.stopFraction, sizeof(settings.stopFraction));
     appendBytes(key, &settings.seed, sizeof(settings.seed));
     appendBytes(key, &settings.frame, sizeof(settings.frame));
     return key;
@@ -302,6 +305,16 @@ void FrameRenderer::commitInputs(bool gradientChanged, bool octreeChanged, bool 
 int64_t FrameRenderer::lastPhotonsTraced() const {
     if (backend_ == Backend::Gpu) return photonsGpu_ ? photonsGpu_->lastPhotonsTraced() : 0;
     return photonsCpu_.photonsTraced;
+}
+
+int64_t FrameRenderer::lastPhotonsCut() const {
+    if (backend_ == Backend::Gpu) return photonsGpu_ ? photonsGpu_->lastPhotonsCut() : 0;
+    return photonsCpu_.photonsCut;
+}
+
+int FrameRenderer::lastPhotonRounds() const {
+    if (backend_ == Backend::Gpu) return photonsGpu_ ? photonsGpu_->lastRounds() : 0;
+    return photonsCpu_.rounds;
 }
 
 PhotonRadianceCpu FrameRenderer::photonVolumes() const {

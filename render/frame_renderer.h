@@ -75,6 +75,10 @@ public:
     int64_t photonSteps() const { return photonSteps_; }
     // Photons that entered the box in the last trace (0 before any).
     int64_t lastPhotonsTraced() const;
+    // The last trace's photons cut (step cap or stop rule) and rounds of the march with photons
+    // (render/photon_tracing.h); on the GPU, small read-backs.
+    int64_t lastPhotonsCut() const;
+    int lastPhotonRounds() const;
     // The smoothed photon volumes of the last trace (the GPU's read back), for tests; empty
     // when the scene has no photon lighting.
     PhotonRadianceCpu photonVolumes() const;

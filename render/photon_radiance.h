@@ -41,6 +41,8 @@ struct PhotonRadianceCpu {
     PhotonTotals totals;
     int64_t steps = 0;          // photon steps taken by the trace
     int64_t photonsTraced = 0;  // photons that entered the box
+    int64_t photonsCut = 0;     // cut at the step cap or by the stop rule (PhotonSettings)
+    int rounds = 0;             // rounds of the march that had photons
 };
 
 // CPU twin: traceLightPhotonsCpu, then smoothVolumeCpu of both volumes.
@@ -70,6 +72,9 @@ public:
     int64_t lastSteps() const;
     // Photons of the last compute that entered the box (no read-back).
     int64_t lastPhotonsTraced() const;
+    // Photons of the last compute that were cut, and its rounds with photons (read back).
+    int64_t lastPhotonsCut() const;
+    int lastRounds() const;
     // The smoothed volumes and the trace's totals, for tests.
     PhotonRadianceCpu download() const;
 

@@ -8,6 +8,8 @@ PhotonSettings photonSettingsFor(const Scene& scene) {
     s.photonsPerSide = scene.render.photons.perSide;
     s.minStepVoxels = scene.render.photons.minStepVoxels;
     s.fluxThreshold = scene.render.photons.fluxThreshold;
+    s.stopFraction = scene.render.photons.stopFraction;
+    s.stepsPerRound = scene.render.photons.stepsPerRound;
     s.seed = scene.render.seed;
     s.frame = 0;  // the same jitter every frame: a still light's photons do not flicker
     return s;
@@ -32,6 +34,8 @@ PhotonRadianceCpu computePhotonRadianceCpu(const ViewSetup& setup,
     out.receiverMap = std::move(traced.receiverMap);
     out.steps = traced.steps;
     out.photonsTraced = traced.photonsTraced;
+    out.photonsCut = traced.photonsCut;
+    out.rounds = traced.rounds;
     return out;
 }
 

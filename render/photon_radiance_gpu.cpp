@@ -116,6 +116,14 @@ int64_t PhotonRadianceGpu::lastPhotonsTraced() const {
     return tracer_->photonsTraced();
 }
 
+int64_t PhotonRadianceGpu::lastPhotonsCut() const {
+    return tracer_->photonsCut();
+}
+
+int PhotonRadianceGpu::lastRounds() const {
+    return tracer_->rounds();
+}
+
 int64_t PhotonRadianceGpu::lastSteps() const {
     return tracer_->stepsTaken();
 }
@@ -129,6 +137,8 @@ PhotonRadianceCpu PhotonRadianceGpu::download() const {
     out.receiverMap = traced.receiverMap;
     out.steps = traced.steps;
     out.photonsTraced = traced.photonsTraced;
+    out.photonsCut = traced.photonsCut;
+    out.rounds = traced.rounds;
     return out;
 }
 

@@ -42,6 +42,15 @@ struct PhotonSettings {
     float minStepVoxels = 1.0f;   // Δs_min, in voxels of the smallest edge
     float fluxThreshold = 1e-4f;  // drop a photon below this fraction of its initial flux
     int maxSteps = 0;             // per photon; 0: 16 crossings of the volume at Δs_min
+    // The march runs in rounds of this many steps of every active photon; after each round the
+    // photons still active are compacted into a list (on the GPU, without a read-back) and only
+    // they are marched on. Without the stop rule the results do not depend on it; with it, the
+    // rule is checked once per round. 0: one round of maxSteps.
+    int stepsPerRound = 32;
+    // After a round, when fewer than this fraction of the traced photons are still active, they
+    // are cut (EK_PHOTON_CUT, their flux counted as dropped): a few trapped photons no longer
+    // keep the whole march going. 0: never; the step cap still applies.
+    float stopFraction = 1e-3f;
     uint32_t seed = 0;
     int frame = 0;
 };
@@ -65,7 +74,10 @@ struct PhotonResultCpu {
     glm::dvec4 fixedPointScale{0.0};  // rgb: radiance channels; w: direction (see above)
     int64_t steps = 0;                // photon steps taken, all photons
     int64_t photonsTraced = 0;        // photons that entered the box
-    int64_t photonsCut = 0;           // still active at maxSteps (their flux counts as dropped)
+    // Still active at maxSteps, or when the stop rule ended the march (PhotonSettings::
+    // stopFraction); their flux counts as dropped.
+    int64_t photonsCut = 0;
+    int rounds = 0;  // rounds of the march that had photons to march (PhotonSettings)
     // Every photon's final state, light after light, index order: for escaped photons the exit
     // point and the direction v they leave with (shared::GpuPhoton, EK_PHOTON_* in position.w).
     std::vector<shared::GpuPhoton> photons;
@@ -90,8 +102,20 @@ struct PhotonPlan {
     size_t photons = 0;                   // all lights' photons
     float minStep = 0.0f;                 // Δs_min in scene units
     int maxSteps = 0;                     // per photon
+    int stepsPerRound = 0;                // in [1, maxSteps]
+    int rounds = 0;                       // enough rounds to reach maxSteps
+    float stopFraction = 0.0f;
 };
 PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings);
+
+// Steps every active photon takes in round `round` (from 0) of plan: stepsPerRound, less in a
+// last round that reaches maxSteps. Every photon still active after a round has taken all of its
+// steps, so all of them have taken the same number and the step cap is one count for all.
+int photonRoundSteps(const PhotonPlan& plan, int round);
+
+// The stop rule: the march ends once fewer than this many photons are active after a round
+// (stopFraction × traced, rounded up, so that "fewer than" compares integers exactly); 0: never.
+int64_t photonStopCount(const PhotonPlan& plan, int64_t photonsTraced);
 
 // Traces the photons of every light of setup (PhotonPlan) through the media: slotGrids are the
 // field volumes (as for computeIndexGradientCpu), gradient and octree the refraction volumes.

@@ -1,7 +1,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -100,7 +102,20 @@ PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings) {
     plan.maxSteps = settings.maxSteps > 0 ? settings.maxSteps
                                           : int(std::ceil(16.0f * float(res.x + res.y + res.z) /
                                                           std::max(settings.minStepVoxels, 1e-3f)));
+    plan.stepsPerRound = settings.stepsPerRound > 0
+                             ? std::min(settings.stepsPerRound, plan.maxSteps)
+                             : plan.maxSteps;
+    plan.rounds = (plan.maxSteps + plan.stepsPerRound - 1) / plan.stepsPerRound;
+    plan.stopFraction = std::max(settings.stopFraction, 0.0f);
     return plan;
+}
+
+int photonRoundSteps(const PhotonPlan& plan, int round) {
+    return std::min(plan.stepsPerRound, plan.maxSteps - round * plan.stepsPerRound);
+}
+
+int64_t photonStopCount(const PhotonPlan& plan, int64_t photonsTraced) {
+    return int64_t(std::ceil(double(plan.stopFraction) * double(photonsTraced)));
 }
 
 PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
@@ -118,7 +133,6 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
     result.resolution = plan.resolution;
     const size_t voxels = plan.voxels;
     const float minStep = plan.minStep;
-    const int maxSteps = plan.maxSteps;
 
     // Step 4: generate every light's photons; the emitted power, summed in index order, sets the
     // fixed-point scales before anything is deposited.
@@ -165,33 +179,59 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
     kernel.receiverDeposits = receiverDeposits.get();
     kernel.receiverScale = totalScale;
 
-    // Step 5: each photon marched to its end by one task; the GPU may instead take one step of
-    // all photons per dispatch (photonStep), which deposits the same segments.
+    // Step 5: the march in rounds (PhotonSettings::stepsPerRound), as on the GPU: each round
+    // marches the active photons by one task per photon, then the ones still active are
+    // compacted into the next round's list. A photon's extinguished flux is carried over the
+    // rounds, so that its bookkeeping is the same float sum as in one uninterrupted march.
     FixedTotals totals;
-    tbb::parallel_for(
-        tbb::blocked_range<size_t>(0, result.photons.size(), 16),
-        [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t i = r.begin(); i != r.end(); ++i) {
-                shared::GpuPhoton& p = result.photons[i];
-                if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
-                glm::vec3 extinguished(0.0f);
-                kernel.tracePhoton(p, minStep, maxSteps, extinguished);
-                const int state = int(p.position.w);
-                const glm::vec3 left(p.flux);
-                for (int c = 0; c < 3; ++c) {
-                    totals.extinguished[c].fetch_add(
-                        shared::PhotonKernelCpu::toFixed(extinguished[c], totalScale[c]),
-                        std::memory_order_relaxed);
-                    std::atomic<int64_t>& bin = state == EK_PHOTON_ESCAPED    ? totals.escaped[c]
-                                                : state == EK_PHOTON_RECEIVED ? totals.received[c]
-                                                                              : totals.dropped[c];
-                    bin.fetch_add(shared::PhotonKernelCpu::toFixed(left[c], totalScale[c]),
-                                  std::memory_order_relaxed);
-                }
-                totals.steps.fetch_add(int64_t(p.direction.w), std::memory_order_relaxed);
-                if (state == EK_PHOTON_CUT) totals.cut.fetch_add(1, std::memory_order_relaxed);
-            }
-        });
+    std::vector<glm::vec3> extinguished(result.photons.size(), glm::vec3(0.0f));
+    // The flux a photon that has ended leaves: escaped, received or dropped (cut included).
+    auto finish = [&](const shared::GpuPhoton& p, glm::vec3 lost) {
+        const int state = int(p.position.w);
+        const glm::vec3 left(p.flux);
+        for (int c = 0; c < 3; ++c) {
+            totals.extinguished[c].fetch_add(
+                shared::PhotonKernelCpu::toFixed(lost[c], totalScale[c]),
+                std::memory_order_relaxed);
+            std::atomic<int64_t>& bin = state == EK_PHOTON_ESCAPED    ? totals.escaped[c]
+                                        : state == EK_PHOTON_RECEIVED ? totals.received[c]
+                                                                      : totals.dropped[c];
+            bin.fetch_add(shared::PhotonKernelCpu::toFixed(left[c], totalScale[c]),
+                          std::memory_order_relaxed);
+        }
+        totals.steps.fetch_add(int64_t(p.direction.w), std::memory_order_relaxed);
+        if (state == EK_PHOTON_CUT) totals.cut.fetch_add(1, std::memory_order_relaxed);
+    };
+    std::vector<uint32_t> active;
+    for (size_t i = 0; i < result.photons.size(); ++i)
+        if (int(result.photons[i].position.w) == EK_PHOTON_ACTIVE) active.push_back(uint32_t(i));
+    const int64_t stopCount = photonStopCount(plan, result.photonsTraced);
+    bool stop = false;  // the stop rule fired: this round cuts instead of marching
+    for (int round = 0; round < plan.rounds && !active.empty(); ++round) {
+        const int steps = photonRoundSteps(plan, round);
+        const bool last = round == plan.rounds - 1;
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, active.size(), 16),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              for (size_t k = r.begin(); k != r.end(); ++k) {
+                                  const uint32_t i = active[k];
+                                  shared::GpuPhoton& p = result.photons[i];
+                                  if (!stop) kernel.marchPhoton(p, minStep, steps, extinguished[i]);
+                                  const bool still = int(p.position.w) == EK_PHOTON_ACTIVE;
+                                  if (still && !stop && !last) continue;
+                                  if (still) p.position.w = float(EK_PHOTON_CUT);
+                                  finish(p, extinguished[i]);
+                              }
+                          });
+        ++result.rounds;
+        if (stop) break;
+        // Compaction; in index order here, in any order on the GPU (photons are independent).
+        active.erase(
+            std::remove_if(
+                active.begin(), active.end(),
+                [&](uint32_t i) { return int(result.photons[i].position.w) != EK_PHOTON_ACTIVE; }),
+            active.end());
+        stop = int64_t(active.size()) < stopCount;
+    }
 
     auto fromFixed = [](int64_t q, double scale) { return scale > 0.0 ? double(q) / scale : 0.0; };
     for (int c = 0; c < 3; ++c) {

@@ -12,20 +12,23 @@
 #include "render/shader_program.h"
 #include "render/volume_kernels_cpu.h"
 #include "render/volume_textures.h"
+#include "shaders/shared/photon_rounds.h"
 
 namespace eikon {
 
 namespace {
 
-// Bindings shaders/photon_trace.comp declares. Texture unit 3 and SSBO bindings 4-6 are used by
-// no other pass, so nothing needs rebinding around them.
+// Bindings shaders/photon_trace.comp declares. Texture unit 3 and SSBO bindings 4-7, 9, 10 are used
+// by no other pass, so nothing needs rebinding around them.
 constexpr GLuint kOctreeUnit = 3;
 constexpr GLuint kGradientUnit = 2;  // volume_bindings.glsl's gradientTex
 constexpr GLuint kPhotonBinding = 4;
 constexpr GLuint kDepositBinding = 5;
 constexpr GLuint kTotalsBinding = 6;
 constexpr GLuint kReceiverBinding = 7;
-constexpr int kLocalSize = 64;
+constexpr GLuint kRoundBinding = 9;
+constexpr GLuint kExtinguishedBinding = 10;
+constexpr int kLocalSize = EK_ROUND_GROUP;
 constexpr int kDepositChannels = 6;  // r, g, b, weighted direction x, y, z
 // escaped rgb, extinguished rgb, dropped rgb, steps, cut, received rgb
 constexpr int kTotalsCount = 14;
@@ -75,6 +78,16 @@ std::vector<T> readBuffer(GLuint buffer, size_t count) {
     return out;
 }
 
+// `count` words from word `first` of buffer.
+std::vector<GLuint> readWords(GLuint buffer, size_t first, size_t count) {
+    std::vector<GLuint> words(count);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(first * sizeof(GLuint)),
+                       GLsizeiptr(count * sizeof(GLuint)), words.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    return words;
+}
+
 // Runs `program` over photons [0, count) of its range in dispatches the driver must accept (GL
 // promises 65535 work groups in x, fewer than a cube layout of N = 1024 needs): each dispatch
 // covers photonCount photons from photonFirst.
@@ -98,11 +111,13 @@ PhotonTracerGpu::PhotonTracerGpu(bool exactMath) {
     generate_ = std::make_unique<ShaderProgram>(
         ShaderProgram::compute("photon_trace.comp", generateDefines));
     trace_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("photon_trace.comp", defines));
+    round_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("photon_round.comp"));
     resizeBuffer(totals_, kTotalsCount * 2 * sizeof(GLuint));
 }
 
 PhotonTracerGpu::~PhotonTracerGpu() {
-    for (GLuint* b : {&photons_, &deposits_, &totals_, &receiverDeposits_})
+    for (GLuint* b :
+         {&photons_, &deposits_, &totals_, &receiverDeposits_, &rounds_, &extinguished_})
         if (*b) glDeleteBuffers(1, b);
 }
 
@@ -117,6 +132,8 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     const size_t photonCount = plan.photons;
     if (photonCount > photonCapacity_ || !photons_) {
         resizeBuffer(photons_, photonCount * sizeof(shared::GpuPhoton));
+        resizeBuffer(rounds_, (EK_ROUND_HEADER + 2 * photonCount) * sizeof(GLuint));
+        resizeBuffer(extinguished_, photonCount * sizeof(glm::vec4));
         photonCapacity_ = photonCount;
     }
     if (voxels > voxelCapacity_ || !deposits_) {
@@ -144,6 +161,8 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepositBinding, deposits_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTotalsBinding, totals_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kReceiverBinding, receiverDeposits_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRoundBinding, rounds_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kExtinguishedBinding, extinguished_);
 
     // Step 4: generate every light's photons, in the layouts the plan chose on the host.
     generate_->use();
@@ -178,18 +197,53 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     const glm::dvec3 totalScale(scaleFor(emitted.x, 1.0), scaleFor(emitted.y, 1.0),
                                 scaleFor(emitted.z, 1.0));
 
-    // Step 5: every photon marched to its end by one invocation.
+    // Step 5: the march in rounds (PhotonSettings::stepsPerRound). Round 0 covers every photon
+    // by a direct dispatch; each later one only the photons the round before appended to its
+    // list, by an indirect dispatch whose arguments photon_round.comp wrote (shared/
+    // photon_rounds.h). The header starts with round 0's count, the photons traced, so that it
+    // counts as a round with photons, as in the CPU twin.
     clearBuffer(deposits_);
     clearBuffer(totals_);
     clearBuffer(receiverDeposits_);
+    GLuint header[EK_ROUND_HEADER] = {};
+    header[EK_ROUND_ARGS + 1] = header[EK_ROUND_ARGS + 2] = 1;
+    header[EK_ROUND_COUNT] = GLuint(host.photonsTraced);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, rounds_);
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(header), header);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     trace_->use();
     trace_->setFloat("minStep", plan.minStep);
-    trace_->setInt("maxSteps", plan.maxSteps);
+    trace_->setInt("listCapacity", int(photonCount));
     const glm::dvec4& s = host.fixedPointScale;
     glUniform4d(trace_->uniformLocation("depositScale"), s.x, s.y, s.z, s.w);
     glUniform3d(trace_->uniformLocation("totalScale"), totalScale.x, totalScale.y, totalScale.z);
-    dispatchPhotons(*trace_, photonCount);
+    round_->use();
+    round_->setUint("stopCount", GLuint(photonStopCount(plan, host.photonsTraced)));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, rounds_);
+    for (int round = 0; round < plan.rounds && host.photonsTraced > 0; ++round) {
+        const int listIn = round & 1;
+        trace_->use();
+        trace_->setInt("roundSteps", photonRoundSteps(plan, round));
+        trace_->setInt("lastRound", round == plan.rounds - 1);
+        trace_->setInt("fromList", round > 0);
+        trace_->setInt("listIn", listIn);
+        if (round == 0) {
+            dispatchPhotons(*trace_, photonCount);
+        } else {
+            glDispatchComputeIndirect(0);
+        }
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        round_->use();
+        round_->setInt("listIn", listIn);
+        glDispatchCompute(1, 1, 1);
+        glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                        GL_BUFFER_UPDATE_BARRIER_BIT);
+        // No read-back to end the loop early: rounds after the last photon ended dispatch zero
+        // groups. Reading the count back after rounds 1, 2, 4, 8, ... did not measurably pay on
+        // llvmpipe (BENCHMARKS.md, photon rounds), so the host never waits on the march.
+    }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     if (timer) timer->end();
 
@@ -209,11 +263,15 @@ std::vector<glm::vec4> PhotonTracerGpu::receiverMap() const {
 }
 
 int64_t PhotonTracerGpu::stepsTaken() const {
-    GLuint words[2] = {0, 0};
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, totals_);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 18 * sizeof(GLuint), sizeof(words), words);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    return joinWords(words);
+    return joinWords(readWords(totals_, 18, 2).data());
+}
+
+int64_t PhotonTracerGpu::photonsCut() const {
+    return joinWords(readWords(totals_, 20, 2).data());
+}
+
+int PhotonTracerGpu::rounds() const {
+    return int(readWords(rounds_, EK_ROUND_MARCHED, 1)[0]);
 }
 
 PhotonResultCpu PhotonTracerGpu::download() const {
@@ -236,6 +294,7 @@ PhotonResultCpu PhotonTracerGpu::download() const {
     for (int c = 0; c < 3; ++c)
         r.totals.received[c] = fromFixed(joinWords(&totals[22 + 2 * c]), totalScale[c]);
     r.receiverMap = receiverMap();
+    r.rounds = rounds();
 
     const std::vector<GLuint> words = readBuffer<GLuint>(deposits_, voxels * kDepositChannels * 2);
     r.radiance.assign(voxels, glm::vec4(0.0f));

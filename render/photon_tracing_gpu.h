@@ -26,7 +26,9 @@ public:
     // field volumes (already uploaded), refraction the ∇n and octree volumes already computed
     // from them, and the params SSBO is already bound at binding 0. Reads the generated photons
     // back once (the emitted power sets the fixed-point scales before anything is deposited, as
-    // in the CPU twin); the results stay on the GPU until download(). Timer stage: "photons".
+    // in the CPU twin), then marches them in rounds with the active photons compacted on the GPU
+    // (shared/photon_rounds.h) without reading anything back; the results stay on the GPU until
+    // download(). Timer stage: "photons".
     void trace(const ViewSetup& setup, VolumeTextures& fields,
                const RefractionVolumesGpu& refraction, const PhotonSettings& settings = {},
                GpuStageTimer* timer = nullptr);
@@ -37,6 +39,10 @@ public:
     std::vector<glm::vec4> receiverMap() const;
     // Photon steps of the last trace (reads back one int64).
     int64_t stepsTaken() const;
+    // Photons of the last trace cut at the step cap or by the stop rule (reads back one int64).
+    int64_t photonsCut() const;
+    // Rounds of the last trace's march that had photons (reads back one word).
+    int rounds() const;
     // Photons of the last trace that entered the box (known on the host: no read-back).
     int64_t photonsTraced() const { return host_.photonsTraced; }
     // For the passes that read the deposits on the GPU (render/photon_radiance_gpu.cpp): the
@@ -48,10 +54,13 @@ public:
 private:
     std::unique_ptr<ShaderProgram> generate_;
     std::unique_ptr<ShaderProgram> trace_;
-    unsigned photons_ = 0;           // SSBO: shared::GpuPhoton per photon
-    unsigned deposits_ = 0;          // SSBO: 6 int64 (low, high uint words) per voxel
-    unsigned totals_ = 0;            // SSBO: 14 int64, see shaders/photon_trace.comp
+    std::unique_ptr<ShaderProgram> round_;  // between rounds (shaders/photon_round.comp)
+    unsigned photons_ = 0;                  // SSBO: shared::GpuPhoton per photon
+    unsigned deposits_ = 0;                 // SSBO: 6 int64 (low, high uint words) per voxel
+    unsigned totals_ = 0;                   // SSBO: 14 int64, see shaders/photon_trace.comp
     unsigned receiverDeposits_ = 0;  // SSBO: 3 int64 (low, high words) per receiver map texel
+    unsigned rounds_ = 0;            // SSBO and indirect arguments: round header, 2 index lists
+    unsigned extinguished_ = 0;      // SSBO: vec4 per photon, its extinction so far
     size_t photonCapacity_ = 0;
     size_t voxelCapacity_ = 0;
     size_t receiverCapacity_ = 0;

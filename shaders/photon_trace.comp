@@ -5,8 +5,10 @@
 //    (photonGrid, run once in the CPU twin's planPhotons), and writes their starting states.
 //    The host sums their flux to set the fixed-point scales before anything is deposited,
 //    exactly as the CPU twin (render/photon_tracing_cpu.cpp) does;
-//  - without: traces the generated photons, deposits every segment piece into the fixed-point
-//    radiance volume, and adds each photon's bookkeeping to the fixed-point totals.
+//  - without: one round of the march (shared/photon_rounds.h): marches each photon of the round
+//    by up to roundSteps steps, depositing every segment piece into the fixed-point radiance
+//    volume; appends the photons still active to the next round's list, and adds the bookkeeping
+//    of each photon that ended (or was cut) to the fixed-point totals.
 //
 // The CPU twin sums int64 values; GLSL 4.30 has no 64-bit integers or atomics, so each int64 is
 // a pair of uint words (low, high) holding its two's complement, and a sum is kept exactly
@@ -126,6 +128,7 @@ void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir);
 void depositReceiverTexel(int index, vec3 flux);
 
 #include "shared/photons.h"
+#include "shared/photon_rounds.h"
 
 // Texture unit 3: no other volume pass uses it (volume_bindings.glsl takes 0-2).
 layout(binding = 3) uniform sampler3D octreeTex;
@@ -140,6 +143,11 @@ layout(std430, binding = 5) buffer DepositBlock { uint deposits[]; };
 layout(std430, binding = 6) buffer TotalsBlock { uint totals[]; };
 // Per receiver map texel (render/receiver_map.h) 3 int64 flux sums as (low, high) word pairs.
 layout(std430, binding = 7) buffer ReceiverBlock { uint receiverDeposits[]; };
+// The round header and the two lists of active photon indices (shared/photon_rounds.h).
+layout(std430, binding = 9) buffer RoundBlock { uint rounds[]; };
+// Per photon: xyz the flux it has lost to extinction in the rounds so far, carried between rounds
+// so that its bookkeeping adds the same float sum as one uninterrupted march.
+layout(std430, binding = 10) buffer ExtinguishedBlock { vec4 photonExtinguished[]; };
 
 uniform int lightIndex;
 uniform int lightGrid;  // EK_PHOTON_GRID_*
@@ -151,7 +159,11 @@ uniform uint seed;
 uniform uint frame;
 uniform float fluxThreshold;
 uniform float minStep;
-uniform int maxSteps;
+uniform int roundSteps;   // steps of this round (render/photon_tracing.h photonRoundSteps)
+uniform bool lastRound;   // the step cap: photons still active after this round are cut
+uniform bool fromList;    // false: round 0, photons[photonFirst ..]; true: list listIn
+uniform int listIn;       // the list this round reads (0 or 1); it appends to the other
+uniform int listCapacity;  // indices per list: the photon count
 // The CPU twin's scales, in double so that value · scale rounds the same way.
 uniform dvec4 depositScale;  // rgb: flux·length channels; w: weighted direction
 uniform dvec3 totalScale;    // per channel, for the totals
@@ -208,17 +220,47 @@ void depositReceiverTexel(int index, vec3 flux) {
     }
 }
 
+// The photon this invocation works on, or −1 for none. Direct dispatches cover photons
+// photonFirst .. photonFirst + photonCount − 1 in x; an indirect one (a round after the first)
+// covers its list, in groups spread over x and y (shared/photon_rounds.h).
+int photonIndex() {
+    const uint g = gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x +
+                   gl_GlobalInvocationID.x;
+#ifndef EK_PHOTON_GENERATE
+    if (fromList) {
+        if (g >= rounds[EK_ROUND_COUNT + listIn]) return -1;
+        return int(rounds[EK_ROUND_HEADER + listIn * listCapacity + int(g)]);
+    }
+#endif
+    return int(g) < photonCount ? photonFirst + int(g) : -1;
+}
+
 void main() {
-    if (int(gl_GlobalInvocationID.x) >= photonCount) return;
-    const int i = photonFirst + int(gl_GlobalInvocationID.x);
+    const int i = photonIndex();
+    if (i < 0) return;
 #ifdef EK_PHOTON_GENERATE
     photons[photonOffset + i] = generatePhoton(lightIndex, lightGrid, photonsPerSide, i, seed,
                                                frame, fluxThreshold);
 #else
     GpuPhoton p = photons[i];
     if (int(p.position.w) != EK_PHOTON_ACTIVE) return;
-    vec3 extinguished = vec3(0.0f);
-    tracePhoton(p, minStep, maxSteps, extinguished);
+    vec3 extinguished = fromList ? photonExtinguished[i].xyz : vec3(0.0f);
+    const bool stop = rounds[EK_ROUND_STOP] != 0u;
+    if (!stop) marchPhoton(p, minStep, roundSteps, extinguished);
+    const bool still = int(p.position.w) == EK_PHOTON_ACTIVE;
+    if (still && !stop && !lastRound) {
+        // Compaction: the photon's state stays in its slot (downloads keep index order); only its
+        // index goes into the next list. The append order varies from run to run, which changes
+        // nothing: photons are independent and every sum is an integer one.
+        photons[i] = p;
+        photonExtinguished[i] = vec4(extinguished, 0.0f);
+        const int listOut = 1 - listIn;
+        const uint at = atomicAdd(rounds[EK_ROUND_COUNT + listOut], 1u);
+        rounds[EK_ROUND_HEADER + listOut * listCapacity + int(at)] = uint(i);
+        return;
+    }
+    // Still active at the step cap or when the stop rule fired: cut, as the CPU twin does.
+    if (still) p.position.w = float(EK_PHOTON_CUT);
     photons[i] = p;
     // The CPU twin's per-photon bookkeeping: the flux left in the photon is escaped, received or
     // dropped.

@@ -458,16 +458,25 @@ int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, EK_INOUT(vec3) extingu
     return EK_PHOTON_ACTIVE;
 }
 
-// Marches a photon until it escapes, lands on a receiver, is dropped, or has taken maxSteps steps (EK_PHOTON_CUT);
-// the state is written to position.w. extinguished gets the flux lost on the way.
+// Marches an active photon for at most `steps` steps, stopping early if it escapes, lands on a
+// receiver or is dropped; the state is written to position.w (still EK_PHOTON_ACTIVE if it took
+// all of them). Everything the march needs lives in the photon itself (position, v and the step
+// count, flux and its threshold) and in `extinguished`, so a march split into rounds of
+// marchPhoton takes exactly the steps of one uninterrupted march (render/photon_tracing.h).
+void marchPhoton(EK_INOUT(GpuPhoton) photon, float minStep, int steps,
+                 EK_INOUT(vec3) extinguished) {
+    int state = int(photon.position.w);
+    for (int i = 0; i < steps && state == EK_PHOTON_ACTIVE; ++i)
+        state = photonStep(photon, minStep, extinguished);
+    photon.position.w = float(state);
+}
+
+// Marches a photon until it escapes, lands on a receiver, is dropped, or has taken maxSteps steps
+// (EK_PHOTON_CUT); the state is written to position.w. extinguished gets the flux lost on the way.
 void tracePhoton(EK_INOUT(GpuPhoton) photon, float minStep, int maxSteps,
                  EK_INOUT(vec3) extinguished) {
-    if (int(photon.position.w) != EK_PHOTON_ACTIVE) return;
-    int state = EK_PHOTON_ACTIVE;
-    for (int i = 0; i < maxSteps && state == EK_PHOTON_ACTIVE; ++i)
-        state = photonStep(photon, minStep, extinguished);
-    if (state == EK_PHOTON_ACTIVE) state = EK_PHOTON_CUT;
-    photon.position.w = float(state);
+    marchPhoton(photon, minStep, maxSteps, extinguished);
+    if (int(photon.position.w) == EK_PHOTON_ACTIVE) photon.position.w = float(EK_PHOTON_CUT);
 }
 
 #endif

@@ -949,6 +949,25 @@ TEST_CASE("receivers parse with their defaults and name their mistakes", "[scene
     }
 }
 
+TEST_CASE("render.photons.stop_fraction and steps_per_round: defaults, 0 turns the rule off",
+          "[scene][photons]") {
+    const eikon::Scene defaults = eikon::parseScene(sceneWith(""), "smoke.json");
+    CHECK(defaults.render.photons.stopFraction == 1e-3f);
+    CHECK(defaults.render.photons.stepsPerRound == 32);
+    const eikon::Scene set = eikon::parseScene(
+        sceneWith(R"("render": {"photons": {"stop_fraction": 0, "steps_per_round": 1}})"),
+        "smoke.json");
+    CHECK(set.render.photons.stopFraction == 0.0f);
+    CHECK(set.render.photons.stepsPerRound == 1);
+    const Failure fraction = failureOf(sceneWith(R"("render": {"photons": {"stop_fraction": 1}})"));
+    CHECK(fraction.where == "smoke.json:/render/photons/stop_fraction");
+    const Failure steps = failureOf(sceneWith(R"("render": {"photons": {"steps_per_round": 0}})"));
+    CHECK(steps.where == "smoke.json:/render/photons/steps_per_round");
+    const Failure typo = failureOf(sceneWith(R"("render": {"photons": {"stop_fractions": 0.1}})"));
+    CHECK(typo.where == "smoke.json:/render/photons/stop_fractions");
+    CHECK_THAT(typo.reason, Contains("did you mean 'stop_fraction'?"));
+}
+
 TEST_CASE("render.photons.kappa_tolerance: default 0.1, 0 turns it off, negative is refused",
           "[scene][photons]") {
     CHECK(eikon::parseScene(sceneWith(""), "smoke.json").render.photons.kappaTolerance == 0.1f);

@@ -149,6 +149,11 @@ TEST_CASE("photon lighting: a camera move traces no photons, a light change does
         REQUIRE(renderer.photonUpdates() == 1);
         const int64_t steps = renderer.photonSteps();
         REQUIRE(steps > 0);
+        // The counts --stats prints, against the trace's own.
+        const PhotonRadianceCpu traced = renderer.photonVolumes();
+        CHECK(renderer.lastPhotonRounds() == traced.rounds);
+        CHECK(traced.rounds > 0);
+        CHECK(renderer.lastPhotonsCut() == traced.photonsCut);
 
         renderer.scene().camera.position = glm::vec3(1.0f, 0.5f, 3.5f);
         const Image moved = renderer.render(0);
@@ -169,6 +174,15 @@ TEST_CASE("photon lighting: a camera move traces no photons, a light change does
         renderer.scene().materials[0].scattering = glm::vec3(0.3f);  // σ: photons rerun
         renderer.render(0);
         CHECK(renderer.photonUpdates() == 3);
+        CHECK(renderer.gradientUpdates() == 1);
+
+        // The march's round size and stop rule decide which photons are cut: photons rerun.
+        renderer.scene().render.photons.stopFraction = 0.01f;
+        renderer.render(0);
+        CHECK(renderer.photonUpdates() == 4);
+        renderer.scene().render.photons.stepsPerRound = 5;
+        renderer.render(0);
+        CHECK(renderer.photonUpdates() == 5);
         CHECK(renderer.gradientUpdates() == 1);
     }
 }
