@@ -153,16 +153,6 @@ std::optional<AnimationTarget> materialTarget(const Scene& scene, int m, const s
     return std::nullopt;
 }
 
-// Liquids stand in their containers: they take the container's placement whenever it moves.
-void moveLiquidsWith(Scene& scene, size_t container) {
-    for (MeshObjectSpec& mesh : scene.meshes) {
-        if (mesh.shape != MeshShapeType::Liquid || mesh.container != int(container)) continue;
-        mesh.translation = scene.meshes[container].translation;
-        mesh.rotation = scene.meshes[container].rotation;
-        mesh.scale = scene.meshes[container].scale;
-    }
-}
-
 // The keys match the parser's (core/scene_simulation.cpp) and so do the ranges: rates of density
 // and of pulling the velocity are ≥ 0, a temperature rate may be negative (a cold source).
 std::optional<AnimationTarget> sourceTarget(int i, const std::string& key, std::string& why) {
@@ -276,19 +266,12 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
     const glm::vec3 v3(v[0], v[1], v[2]);
     const size_t i = size_t(t.index);
     switch (t.kind) {
-        case TargetKind::MeshTranslate:
-            scene.meshes[i].translation = v3;
-            moveLiquidsWith(scene, i);
-            break;
-        case TargetKind::MeshScale:
-            scene.meshes[i].scale = v3;
-            moveLiquidsWith(scene, i);
-            break;
+        case TargetKind::MeshTranslate: scene.meshes[i].translation = v3; break;
+        case TargetKind::MeshScale: scene.meshes[i].scale = v3; break;
         case TargetKind::MeshRotation: {
             const glm::quat q(value[3], value[0], value[1], value[2]);  // [x, y, z, w]
             const float length = glm::length(q);
             if (length > 0.0f && std::isfinite(length)) scene.meshes[i].rotation = q / length;
-            moveLiquidsWith(scene, i);
             break;
         }
         case TargetKind::HandleTranslate:

@@ -28,6 +28,11 @@ TriangleMesh meshShape(const MeshObjectSpec& spec) {
     return {};
 }
 
+const MeshObjectSpec& placementOf(const Scene& scene, size_t index) {
+    const MeshObjectSpec& mesh = scene.meshes[index];
+    return mesh.shape == MeshShapeType::Liquid ? scene.meshes[size_t(mesh.container)] : mesh;
+}
+
 TriangleMesh placeMesh(const TriangleMesh& local, const MeshObjectSpec& spec) {
     TriangleMesh world = local;
     for (glm::vec3& p : world.positions) p = spec.translation + spec.rotation * (spec.scale * p);

@@ -12,6 +12,10 @@ namespace eikon {
 // render volume is framed on; the surface itself comes from sim/water_surface.h each frame.
 TriangleMesh meshShape(const MeshObjectSpec& spec);
 
+// The spec whose scale, rotation and translation place mesh `index`: its own, or for a liquid its
+// container's, which it stands in and moves with (tracks animate the container).
+const MeshObjectSpec& placementOf(const Scene& scene, size_t index);
+
 // Every position p becomes translation + rotation · (scale ⊙ p). A mirroring scale (never from
 // the parser, which wants scales > 0) would flip the winding.
 TriangleMesh placeMesh(const TriangleMesh& local, const MeshObjectSpec& spec);

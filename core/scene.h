@@ -114,7 +114,7 @@ struct MaterialSpec {
 // the list displaces earlier ones (each coverage is multiplied by 1 − the coverage of every later
 // mesh), so the optics never add up where two objects overlap.
 // A liquid fills an earlier mesh (its container, a glass or cup) to a fraction of its cavity's
-// depth (sim/container_fill.h), and keeps the container's placement as that moves.
+// depth (sim/container_fill.h), placed by the container's placement as that moves (placementOf).
 enum class MeshShapeType { File, Icosphere, Box, Water, Liquid };
 
 // A pool of water whose surface follows the damped wave equation (sim/water_surface.h), stepped

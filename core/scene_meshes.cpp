@@ -275,7 +275,7 @@ MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDi
 // The container is an earlier mesh (so the liquid, later, displaces the glass where their voxels
 // overlap) whose shape stays put: a simulated or deformed one would need the liquid re-made
 // every frame, which is not done.
-void placeInContainer(const Value& at, const std::string& name,
+void resolveContainer(const Value& at, const std::string& name,
                       const std::vector<MeshObjectSpec>& earlier, MeshObjectSpec& liquid) {
     const auto it = std::find_if(earlier.begin(), earlier.end(),
                                  [&](const MeshObjectSpec& m) { return m.name == name; });
@@ -289,10 +289,7 @@ void placeInContainer(const Value& at, const std::string& name,
     if (it->jelly || it->arap)
         at.fail("mesh \"" + name + "\" has a deformer: a liquid in a deforming container is "
                 "not supported");
-    liquid.container = int(it - earlier.begin());
-    liquid.scale = it->scale;
-    liquid.rotation = it->rotation;
-    liquid.translation = it->translation;
+    liquid.container = int(it - earlier.begin());  // its placement: core/mesh_placement.h
 }
 
 }  // namespace
@@ -310,7 +307,7 @@ ParsedMeshes readMeshes(const Value& value, const std::filesystem::path& sceneDi
                                                "\" (already used by " + elements[j].pointer() +
                                                ")");
         if (mesh.shape == MeshShapeType::Liquid)
-            placeInContainer(elements[i].child("shape").child("container"), containerName,
+            resolveContainer(elements[i].child("shape").child("container"), containerName,
                              out.meshes, mesh);
         const MeshFieldNames fields = meshMaterialFieldNames(mesh);
         const bool volumetric = optics.absorption != glm::vec3(0.0f) ||

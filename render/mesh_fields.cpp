@@ -64,9 +64,10 @@ const TriangleMesh& MeshFields::placed(const Scene& scene, size_t index) {
         throw Error(scene.path + ":" + spec.jsonPath + "/file",
                     "mesh '" + spec.name + "' (" + spec.file +
                         ") was not loaded: the program rendering the scene must read it");
-    std::vector<unsigned char> key = placementKey(m.version, spec);
+    const MeshObjectSpec& placement = placementOf(scene, index);
+    std::vector<unsigned char> key = placementKey(m.version, placement);
     if (key != m.placedKey) {
-        m.placed = placeMesh(m.local, spec);
+        m.placed = placeMesh(m.local, placement);
         m.placedKey = std::move(key);
     }
     return m.placed;

@@ -153,3 +153,24 @@ TEST_CASE("a water mesh frames the volume on its room and waits to be stepped", 
     CHECK_THROWS_WITH(renderer.render(0), Catch::Contains("/s/pool.json:/meshes/0/shape") &&
                                               Catch::Contains("never stepped"));
 }
+
+TEST_CASE("a liquid is placed by its container and waits to be made", "[meshes]") {
+    Scene scene = parseScene(R"({
+        "meshes": [{"name": "cup", "shape": {"type": "box", "min": [-1, 0, -1], "max": [1, 2, 1]},
+                    "translate": [3, 0, 0], "scale": 0.5, "ior": 1.5},
+                   {"name": "tea", "shape": {"type": "liquid", "container": "cup", "fill": 0.5},
+                    "absorption": [1, 1, 1]}],
+        "volume": {"resolution": 16}
+    })", "/s/tea.json");
+    MeshFields meshes(scene);
+    CHECK_THROWS_WITH(meshes.worldBounds(scene),
+                      Catch::Contains("/s/tea.json:/meshes/1/shape") && Catch::Contains("never made"));
+    // The liquid's object-space mesh (what sim/container_fill.h makes) goes where the cup goes.
+    meshes.setMesh(scene, 1, boxMesh(glm::vec3(-0.5f, 0.2f, -0.5f), glm::vec3(0.5f, 1.0f, 0.5f)));
+    Bounds3 tea = meshes.worldBounds(scene)[1];
+    CHECK(tea.min == glm::vec3(2.75f, 0.1f, -0.25f));
+    CHECK(tea.max == glm::vec3(3.25f, 0.5f, 0.25f));
+    scene.meshes[0].translation = glm::vec3(0.0f, 1.0f, 0.0f);  // as a track would move the cup
+    tea = meshes.worldBounds(scene)[1];
+    CHECK(tea.min == glm::vec3(-0.25f, 1.1f, -0.25f));
+}
