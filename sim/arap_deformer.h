@@ -50,6 +50,7 @@ public:
     double energy() const;
 
     const std::vector<glm::vec3>& positions() const { return positions_; }
+    const TriangleMesh& rest() const { return rest_; }
     // The deformed mesh (the rest mesh's triangles). Vertex normals, areas and the like are not
     // kept here: whoever needs them recomputes them from this after each solve.
     TriangleMesh deformedMesh() const;

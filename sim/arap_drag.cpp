@@ -18,7 +18,7 @@ bool inRegion(const ArapHandleSpec& h, glm::vec3 p) {
 }  // namespace
 
 ArapDrag::ArapDrag(const TriangleMesh& rest, const ArapSpec& spec, const std::string& what)
-    : rest_(rest), deformer_(rest), handles_(spec.handles.size()), what_(what) {
+    : deformer_(rest), handles_(spec.handles.size()), what_(what) {
     // Only vertices the triangles use can be handles: the deformer moves nothing else.
     std::vector<bool> used(rest.positions.size(), false);
     for (const glm::uvec3& t : rest.triangles) used[t.x] = used[t.y] = used[t.z] = true;
@@ -55,7 +55,7 @@ std::vector<glm::vec3> ArapDrag::handleTargets(const ArapSpec& spec) const {
     for (size_t j = 0; j < handles_.size(); ++j) {
         const ArapHandleSpec& h = spec.handles[j];
         for (std::uint32_t v : handles_[j])
-            targets.push_back(h.center + h.rotation * (rest_.positions[v] - h.center) +
+            targets.push_back(h.center + h.rotation * (deformer_.rest().positions[v] - h.center) +
                               h.translation);
     }
     return targets;

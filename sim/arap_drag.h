@@ -35,7 +35,6 @@ public:
     const std::vector<std::vector<std::uint32_t>>& handleVertices() const { return handles_; }
 
 private:
-    TriangleMesh rest_;
     ArapDeformer deformer_;
     std::vector<std::vector<std::uint32_t>> handles_;
     std::string what_;
