@@ -12,6 +12,8 @@
 #include "support/run_eikon.h"
 #include "support/test_paths.h"
 
+using eikon::test::checkOneLineError;
+using eikon::test::lines;
 using eikon::test::quoted;
 using eikon::test::readFile;
 using eikon::test::runEikon;
@@ -23,13 +25,6 @@ using eikon::test::writeFile;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::vector<std::string> lines(const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) out.push_back(line);
-    return out;
-}
 
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
@@ -45,20 +40,6 @@ std::pair<int, int> pngSize(const std::string& path) {
                int((unsigned char)b[at + 2]) << 8 | int((unsigned char)b[at + 3]);
     };
     return {be32(16), be32(20)};
-}
-
-// A failed command: non-zero exit, nothing on stdout, exactly one line on stderr that reads
-// "eikon: <where>: <reason>", where `where` is "<where>: " (the location and its separator).
-void checkOneLineError(const RunResult& r, const std::string& where) {
-    INFO("exit " << r.exitCode << "\nstdout: " << r.out << "\nstderr: " << r.err);
-    CHECK(r.exitCode != 0);
-    CHECK(r.out.empty());
-    const std::vector<std::string> ls = lines(r.err);
-    REQUIRE(ls.size() == 1);
-    CHECK(r.err.back() == '\n');
-    const std::string prefix = "eikon: " + where;
-    CHECK(ls[0].rfind(prefix, 0) == 0);
-    CHECK(ls[0].size() > prefix.size());  // a reason follows the location
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 // files that cannot be read. Runs the built binary (this suite depends on it).
 #include <catch2/catch.hpp>
 
-#include <algorithm>
 #include <string>
 
 #include "sim/mesh_test_files.h"
@@ -63,10 +62,7 @@ TEST_CASE("eikon info on an unreadable mesh: one line naming the file, non-zero 
     eikon::test::writeText(dir + "/empty.stl", "");
     for (const std::string& file : {dir + "/absent.ply", dir + "/nan.obj", dir + "/empty.stl"}) {
         const RunResult r = runEikon("info " + quoted(file), dir);
-        INFO(file << "\nstdout:\n" << r.out << "stderr:\n" << r.err);
-        CHECK(r.exitCode != 0);
-        CHECK(r.out.empty());
-        CHECK(r.err.rfind("eikon: " + file, 0) == 0);
-        CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+        INFO(file);
+        eikon::test::checkOneLineError(r, file);  // a line number may follow (nan.obj:2)
     }
 }

@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace eikon::test {
 
@@ -54,6 +56,27 @@ inline RunResult runEikon(const std::string& args, const std::string& dir) {
     fs::remove(out);
     fs::remove(err);
     return r;
+}
+
+inline std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+}
+
+// A failed command: non-zero exit, nothing on stdout, exactly one line on stderr that reads
+// "eikon: <where>: <reason>", where `where` is "<where>: " (the location and its separator).
+inline void checkOneLineError(const RunResult& r, const std::string& where) {
+    INFO("exit " << r.exitCode << "\nstdout: " << r.out << "\nstderr: " << r.err);
+    CHECK(r.exitCode != 0);
+    CHECK(r.out.empty());
+    const std::vector<std::string> ls = lines(r.err);
+    REQUIRE(ls.size() == 1);
+    CHECK(r.err.back() == '\n');
+    const std::string prefix = "eikon: " + where;
+    CHECK(ls[0].rfind(prefix, 0) == 0);
+    CHECK(ls[0].size() > prefix.size());  // a reason follows the location
 }
 
 }  // namespace eikon::test
