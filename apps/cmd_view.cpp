@@ -1,9 +1,12 @@
 // eikon view: a window that renders the scene live. Left drag orbits, the wheel zooms, E/Q change
 // exposure, [ and ] step frames, Space plays, P saves a screenshot, R resets the view, Esc quits.
-// A camera move reruns only the viewing pass (light volumes and uploads are reused).
+// A camera move reruns only the viewing pass (light volumes and uploads are reused). ARAP handles
+// show as rings: a right click picks one, H selects the next, a right drag moves it and the shape
+// follows (apps/view_handles.h).
 #include <GLFW/glfw3.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -13,6 +16,8 @@
 #include "apps/orbit_camera.h"
 #include "apps/scene_driver.h"
 #include "apps/scene_input.h"
+#include "apps/view_handles.h"
+#include "core/camera.h"
 #include "core/error.h"
 #include "render/display_pass.h"
 #include "render/frame_renderer.h"
@@ -27,7 +32,26 @@ struct ViewOptions {
     std::string backend = "auto";
     int exitAfter = 0;  // render this many frames (orbiting 10 degrees each), then quit
     std::string screenshot;
+    std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
 };
+
+// A scripted drag: the handle's name and the pixels it moves by.
+struct ScriptedDrag {
+    std::string handle;
+    glm::vec2 pixels{0.0f};
+};
+
+ScriptedDrag parseDrag(const std::string& text) {
+    const size_t colon = text.rfind(':');
+    ScriptedDrag d;
+    char end = 0;
+    if (colon == std::string::npos ||
+        std::sscanf(text.c_str() + colon + 1, "%f,%f%c", &d.pixels.x, &d.pixels.y, &end) != 2 ||
+        !std::isfinite(d.pixels.x) || !std::isfinite(d.pixels.y))
+        throw Error("--drag", "'" + text + "' is not MESH/HANDLE:DX,DY (pixels, y down)");
+    d.handle = text.substr(0, colon);
+    return d;
+}
 
 // Keys that act once per press.
 class KeyEdges {
@@ -59,13 +83,18 @@ std::string statsLine(const std::vector<StageTime>& stages) {
 }
 
 int runView(const ViewOptions& o) {
+    std::optional<ScriptedDrag> scripted;
+    if (!o.drag.empty()) scripted = parseDrag(o.drag);
     Scene scene = sceneFromInput(o.input, "", o.size);
+    // Before the window opens, so that a bad scene or --drag fails without a display.
+    SceneDriver driver(scene);
+    ViewHandles handles(driver, scene);
+    if (scripted) handles.select(scripted->handle);
     GlfwWindowContext window(scene.render.width, scene.render.height, "eikon view");
     // "auto": the window's GPU unless it is a software rasterizer (see apps/backend_choice.h).
     const bool gpu =
         o.backend == "gpu" || (o.backend == "auto" && !isSoftwareRenderer(window.rendererName()));
     FrameRenderer renderer(scene, gpu ? Backend::Gpu : Backend::Cpu, &window);
-    SceneDriver driver(scene);
     std::printf("%s: %s\n", gpu ? "GPU" : "CPU twin (display on OpenGL)",
                 window.rendererName().c_str());
     DisplayPass display;
@@ -77,10 +106,21 @@ int runView(const ViewOptions& o) {
     float exposure = scene.render.exposure;
     bool dirty = true, playing = false;
     int rendered = 0;
-    Image image;
+    Image image, shown;  // the render, and the render with the handles' markers
     std::optional<OrbitCamera> orbit;
     double lastX = 0, lastY = 0;
-    bool dragging = false;
+    bool orbiting = false, draggingHandle = false;
+    glm::vec2 pendingDrag(0.0f);  // image pixels the selected handle still has to move
+    double dragMs = -1.0;         // the last drag's solve, for the title; -1: none since
+    const int width = scene.render.width;
+    auto cameraNow = [&] {
+        return makeCameraFrame(renderer.scene().camera, renderer.volume().bounds, width,
+                               scene.render.height);
+    };
+    auto showMarkers = [&] {
+        shown = image;
+        handles.drawMarkers(shown);
+    };
     while (!window.shouldClose()) {
         window.pollEvents();
         if (keys.pressed(GLFW_KEY_ESCAPE)) break;
@@ -94,14 +134,38 @@ int runView(const ViewOptions& o) {
                           scene.render.height);
             dirty = true;
         }
+        if (keys.pressed(GLFW_KEY_H) && rendered > 0) {
+            handles.selectNext();
+            showMarkers();
+        }
         double x = 0, y = 0;
         glfwGetCursorPos(window.window(), &x, &y);
-        const bool down = glfwGetMouseButton(window.window(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-        if (down && dragging && orbit && (x != lastX || y != lastY)) {
+        // The cursor is in window units; the image may be shown larger or smaller.
+        int windowWidth = 0, windowHeight = 0;
+        glfwGetWindowSize(window.window(), &windowWidth, &windowHeight);
+        const float toImage = windowWidth > 0 ? float(width) / float(windowWidth) : 1.0f;
+        const glm::vec2 cursor = toImage * glm::vec2(float(x), float(y));
+        const glm::vec2 moved = toImage * glm::vec2(float(x - lastX), float(y - lastY));
+        const bool left = glfwGetMouseButton(window.window(), GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        if (left && orbiting && orbit && (x != lastX || y != lastY)) {
             orbit->orbit(-0.01f * float(x - lastX), -0.01f * float(y - lastY));
             dirty = true;
         }
-        dragging = down;
+        orbiting = left;
+        const bool right =
+            glfwGetMouseButton(window.window(), GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+        if (right && !draggingHandle && rendered > 0) {
+            draggingHandle = true;
+            if (handles.pick(cursor)) showMarkers();
+        } else if (right && handles.selected() && moved != glm::vec2(0.0f)) {
+            pendingDrag += moved;
+            dirty = true;
+        } else if (!right && draggingHandle) {
+            draggingHandle = false;
+            if (handles.selected())
+                std::printf("%s\n",
+                            handles.describeSelected(renderer, driver.timeOfFrame(frame)).c_str());
+        }
         lastX = x, lastY = y;
         if (scrollAccumulated != 0.0 && orbit) {
             orbit->zoom(std::pow(0.9f, float(scrollAccumulated)));
@@ -115,22 +179,49 @@ int runView(const ViewOptions& o) {
             orbit->orbit(0.1745f, 0.0f);
             dirty = true;
         }
+        const bool scriptedNow = scripted && rendered == 1;
+        if (scriptedNow) pendingDrag += scripted->pixels, dirty = true;
 
         if (dirty) {
             driver.prepareFrame(renderer, frame);
             if (orbit) renderer.scene().camera = orbit->spec();  // the user's view wins
+            if (pendingDrag != glm::vec2(0.0f) && rendered > 0) {
+                handles.locate(renderer, cameraNow(), width);
+                if (scriptedNow)
+                    std::printf(
+                        "before the drag: %s\n",
+                        handles.describeSelected(renderer, driver.timeOfFrame(frame)).c_str());
+                const auto start = std::chrono::steady_clock::now();
+                handles.drag(renderer, cameraNow(), width, pendingDrag);
+                dragMs = std::chrono::duration<double, std::milli>(
+                             std::chrono::steady_clock::now() - start)
+                             .count();
+                pendingDrag = glm::vec2(0.0f);
+            }
             image = renderer.render(frame);
             if (!orbit)
                 orbit.emplace(scene.camera, renderer.volume().bounds, scene.render.width,
                               scene.render.height);
-            const std::string title = "eikon view - frame " + std::to_string(frame) + " - " +
-                                      statsLine(renderer.takeStats());
+            handles.locate(renderer, cameraNow(), width);
+            if (scriptedNow)
+                std::printf("after the drag: %s\n",
+                            handles.describeSelected(renderer, driver.timeOfFrame(frame)).c_str());
+            showMarkers();
+            std::string stats = statsLine(renderer.takeStats());
+            if (dragMs >= 0.0) {
+                char drag[48];
+                std::snprintf(drag, sizeof(drag), "ARAP drag %.1f ms  ", dragMs);
+                stats = drag + stats;
+                dragMs = -1.0;
+            }
+            if (scriptedNow) std::printf("the drag's frame: %s\n", stats.c_str());
+            const std::string title = "eikon view - frame " + std::to_string(frame) + " - " + stats;
             glfwSetWindowTitle(window.window(), title.c_str());
             ++rendered;
             dirty = false;
         }
         const auto fb = window.framebufferSize();
-        display.draw(image, exposure, scene.render.toneCurve, fb.width, fb.height);
+        display.draw(shown, exposure, scene.render.toneCurve, fb.width, fb.height);
         const bool last = o.exitAfter > 0 && rendered >= o.exitAfter;
         if ((last || keys.pressed(GLFW_KEY_P)) && (!o.screenshot.empty() || !last)) {
             const std::string path = o.screenshot.empty() ? "eikon_view.png" : o.screenshot;
@@ -160,6 +251,9 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "render this many frames, orbiting 10 degrees each, then quit (for tests)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--screenshot", o->screenshot, "with --exit-after: save the last frame here");
+    cmd->add_option("--drag", o->drag,
+                    "MESH/HANDLE:DX,DY: after the first frame, drag that ARAP handle by DX,DY "
+                    "pixels (y down) as a right drag would, and print where it went (for tests)");
     cmd->callback([o, &exitCode] { exitCode = runView(*o); });
 }
 

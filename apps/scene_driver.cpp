@@ -1,11 +1,11 @@
 #include "apps/scene_driver.h"
 
-#include "core/mesh_placement.h"
 #include "core/error.h"
+#include "core/mesh_placement.h"
 #include "sim/container_fill.h"
+#include "sim/refractive_mesh.h"
 #include "sim/smoke_from_scene.h"
 #include "sim/smoke_publish.h"
-#include "sim/refractive_mesh.h"
 
 namespace eikon::app {
 
@@ -21,8 +21,8 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
         Simulated s;
         s.mesh = m;
         if (spec.shape == MeshShapeType::Water) {
-            s.water = std::make_unique<sim::WaterSurface>(
-                sim::waterSettings(spec.water, scene.time.fps));
+            s.water =
+                std::make_unique<sim::WaterSurface>(sim::waterSettings(spec.water, scene.time.fps));
         } else if (spec.jelly) {
             // The jelly lives in the world, starting where the mesh is placed.
             s.jelly = std::make_unique<sim::Jelly>(placeMesh(local, spec),
@@ -31,6 +31,7 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
             // Dragged in object space: the placement still applies (and may be animated).
             s.arap = std::make_unique<sim::ArapDrag>(local, *spec.arap,
                                                      scene.path + ":" + spec.jsonPath);
+            s.dragOffsets.assign(spec.arap->handles.size(), glm::vec3(0.0f));
         } else if (spec.shape == MeshShapeType::File) {
             fixedMeshes_.emplace_back(m, std::move(local));
         } else if (spec.shape == MeshShapeType::Liquid) {
@@ -40,8 +41,7 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
             for (const auto& [c, mesh] : fixedMeshes_)
                 if (c == container) containerMesh = mesh;
             fixedMeshes_.emplace_back(
-                m, fillContainer(containerMesh, spec.fill, scene.path + ":" + spec.jsonPath)
-                       .mesh);
+                m, fillContainer(containerMesh, spec.fill, scene.path + ":" + spec.jsonPath).mesh);
         }
         if (s.water || s.jelly || s.arap) simulated_.push_back(std::move(s));
     }
@@ -90,15 +90,56 @@ void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
             // copy of the scene at each frame's time.
             const Scene& now = renderer.scene();
             s.arap->advanceToFrame(frame, [&](int k) {
-                if (k == frame || animation_.empty()) return *now.meshes[s.mesh].arap;
+                if (k == frame || animation_.empty()) return withDrags(now, s);
                 Scene then = now;
                 animation_.apply(clock_.timeOfFrame(k), then);
-                return *then.meshes[s.mesh].arap;
+                return withDrags(then, s);
             });
             renderer.setMesh(s.mesh, s.arap->mesh());
         }
         s.frameSet = frame;
     }
+}
+
+ArapSpec SceneDriver::withDrags(const Scene& scene, const Simulated& s) {
+    ArapSpec spec = *scene.meshes[s.mesh].arap;
+    for (size_t j = 0; j < spec.handles.size() && j < s.dragOffsets.size(); ++j)
+        spec.handles[j].translation += s.dragOffsets[j];
+    return spec;
+}
+
+SceneDriver::Simulated& SceneDriver::arapOf(size_t mesh) {
+    for (Simulated& s : simulated_)
+        if (s.arap && s.mesh == mesh) return s;
+    throw Error("mesh " + std::to_string(mesh), "has no ARAP deformer to drag");
+}
+
+std::vector<SceneDriver::HandleRef> SceneDriver::arapHandles() const {
+    std::vector<HandleRef> handles;
+    for (const Simulated& s : simulated_)
+        if (s.arap)
+            for (size_t j = 0; j < s.dragOffsets.size(); ++j) handles.push_back({s.mesh, j});
+    return handles;
+}
+
+glm::vec3 SceneDriver::handleCentre(const FrameRenderer& renderer, HandleRef h) const {
+    const Simulated& s = arapOf(h.mesh);
+    const std::vector<std::uint32_t>& vertices = s.arap->handleVertices()[h.handle];
+    glm::vec3 sum(0.0f);
+    for (std::uint32_t v : vertices) sum += s.arap->positions()[v];
+    return placePoint(sum / float(vertices.size()), placementOf(renderer.scene(), h.mesh));
+}
+
+void SceneDriver::dragHandle(FrameRenderer& renderer, HandleRef h, glm::vec3 worldMotion) {
+    Simulated& s = arapOf(h.mesh);
+    if (s.frameSet < 0) throw Error("eikon view", "a handle was dragged before any frame");
+    s.dragOffsets[h.handle] += unplaceMotion(worldMotion, placementOf(renderer.scene(), h.mesh));
+    s.arap->dragCurrentFrame(withDrags(renderer.scene(), s));
+    renderer.setMesh(s.mesh, s.arap->mesh());
+}
+
+glm::vec3 SceneDriver::handleTranslation(const FrameRenderer& renderer, HandleRef h) const {
+    return withDrags(renderer.scene(), arapOf(h.mesh)).handles[h.handle].translation;
 }
 
 }  // namespace eikon::app

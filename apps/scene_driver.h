@@ -28,6 +28,25 @@ public:
 
     // Sets the renderer's scene to frame `frame`'s state.
     void prepareFrame(FrameRenderer& renderer, int frame);
+    double timeOfFrame(int frame) const { return clock_.timeOfFrame(frame); }
+
+    // The user's drags of ARAP handles (eikon view). A drag moves a handle at every frame, on
+    // top of what its tracks do, so playing or stepping frames keeps it; the frame on screen
+    // follows at once, by more iterations from its current shape (sim/arap_drag.h
+    // dragCurrentFrame), and a frame reached later is solved from rest with the drags in.
+    struct HandleRef {
+        size_t mesh = 0;    // index into scene.meshes
+        size_t handle = 0;  // index into that mesh's deformer handles
+    };
+    std::vector<HandleRef> arapHandles() const;
+    // The world position of the centre of the handle's vertices in the prepared frame's shape.
+    glm::vec3 handleCentre(const FrameRenderer& renderer, HandleRef h) const;
+    // Moves the handle by `worldMotion` (in the prepared frame's placement) and re-solves the
+    // prepared frame's shape.
+    void dragHandle(FrameRenderer& renderer, HandleRef h, glm::vec3 worldMotion);
+    // The handle's translation at the prepared frame with the drags in: the value a key of its
+    // /meshes/i/deformer/handles/j/translate track needs to keep the dragged pose.
+    glm::vec3 handleTranslation(const FrameRenderer& renderer, HandleRef h) const;
 
 private:
     sim::SceneAnimation animation_;
@@ -39,9 +58,16 @@ private:
         std::unique_ptr<sim::WaterSurface> water;
         std::unique_ptr<sim::Jelly> jelly;
         std::unique_ptr<sim::ArapDrag> arap;
-        int frameSet = -1;  // the frame whose mesh the renderer has
+        std::vector<glm::vec3> dragOffsets;  // ARAP: per handle, object space, from the user
+        int frameSet = -1;                   // the frame whose mesh the renderer has
     };
     std::vector<Simulated> simulated_;
+    Simulated& arapOf(size_t mesh);  // throws unless mesh `mesh` has an ARAP deformer
+    const Simulated& arapOf(size_t mesh) const {
+        return const_cast<SceneDriver*>(this)->arapOf(mesh);
+    }
+    // The deformer's spec in `scene` (the tracks applied) with the user's drags added.
+    static ArapSpec withDrags(const Scene& scene, const Simulated& s);
     // The scene's smoke, stepped live when a source of type "simulation" shows it: frame f holds
     // the state after f − frame_start + 1 frames, as in `eikon simulate`'s cache.
     void stepSmoke(FrameRenderer& renderer, int frame);

@@ -28,4 +28,31 @@ CameraFrame makeCameraFrame(const CameraSpec& spec, const Bounds3& volume, int w
     return cam;
 }
 
+namespace {
+
+// Pixels per unit of u = x / depth: u spans [−tanHalfFovX, tanHalfFovX] across the width, and v
+// spans the same per pixel (square pixels).
+float pixelsPerTangent(const CameraFrame& camera, int width) {
+    return 0.5f * float(width) / camera.tanHalfFovX;
+}
+
+}  // namespace
+
+std::optional<glm::vec2> projectToImage(const CameraFrame& camera, glm::vec3 p, int width) {
+    const glm::vec3 d = p - camera.origin;
+    const float depth = glm::dot(d, camera.forward);
+    if (!(depth > 0.0f)) return std::nullopt;
+    const float scale = pixelsPerTangent(camera, width);
+    const float height = float(width) / camera.aspect;
+    return glm::vec2(0.5f * float(width) + scale * glm::dot(d, camera.right) / depth,
+                     0.5f * height - scale * glm::dot(d, camera.up) / depth);
+}
+
+glm::vec3 cameraPlaneMotion(const CameraFrame& camera, glm::vec3 p, glm::vec2 pixels, int width) {
+    const float depth = glm::dot(p - camera.origin, camera.forward);
+    if (!(depth > 0.0f)) return glm::vec3(0.0f);
+    const float worldPerPixel = depth / pixelsPerTangent(camera, width);
+    return worldPerPixel * (pixels.x * camera.right - pixels.y * camera.up);
+}
+
 }  // namespace eikon

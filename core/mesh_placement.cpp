@@ -18,8 +18,7 @@ TriangleMesh meshShape(const MeshObjectSpec& spec) {
             float headroom = 0.0f;
             for (const WaterDropletSpec& d : spec.water.droplets) headroom += std::abs(d.depth);
             const glm::vec2 half = 0.5f * spec.water.size;
-            return boxMesh({-half.x, 0.0f, -half.y},
-                           {half.x, spec.water.depth + headroom, half.y});
+            return boxMesh({-half.x, 0.0f, -half.y}, {half.x, spec.water.depth + headroom, half.y});
         }
         case MeshShapeType::File:
         case MeshShapeType::Liquid:
@@ -33,16 +32,23 @@ const MeshObjectSpec& placementOf(const Scene& scene, size_t index) {
     return mesh.shape == MeshShapeType::Liquid ? scene.meshes[size_t(mesh.container)] : mesh;
 }
 
+glm::vec3 placePoint(glm::vec3 local, const MeshObjectSpec& spec) {
+    return spec.translation + spec.rotation * (spec.scale * local);
+}
+
+glm::vec3 unplaceMotion(glm::vec3 world, const MeshObjectSpec& spec) {
+    return (glm::conjugate(spec.rotation) * world) / spec.scale;
+}
+
 TriangleMesh placeMesh(const TriangleMesh& local, const MeshObjectSpec& spec) {
     TriangleMesh world = local;
-    for (glm::vec3& p : world.positions) p = spec.translation + spec.rotation * (spec.scale * p);
+    for (glm::vec3& p : world.positions) p = placePoint(p, spec);
     return world;
 }
 
 TriangleMesh unplaceMesh(const TriangleMesh& world, const MeshObjectSpec& spec) {
     TriangleMesh local = world;
-    const glm::quat inverse = glm::conjugate(spec.rotation);
-    for (glm::vec3& p : local.positions) p = (inverse * (p - spec.translation)) / spec.scale;
+    for (glm::vec3& p : local.positions) p = unplaceMotion(p - spec.translation, spec);
     return local;
 }
 

@@ -24,4 +24,11 @@ TriangleMesh placeMesh(const TriangleMesh& local, const MeshObjectSpec& spec);
 // the world, such as the jelly, whose result the renderer places again).
 TriangleMesh unplaceMesh(const TriangleMesh& world, const MeshObjectSpec& spec);
 
+// One object-space point placed in the world, as placeMesh places each vertex.
+glm::vec3 placePoint(glm::vec3 local, const MeshObjectSpec& spec);
+
+// The object-space motion that the placement turns into the world motion `world` (a difference
+// of points, so the translation drops out): what a drag in the world does to a handle.
+glm::vec3 unplaceMotion(glm::vec3 world, const MeshObjectSpec& spec);
+
 }  // namespace eikon

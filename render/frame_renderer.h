@@ -52,6 +52,7 @@ public:
 
     // The scene, for changes between frames (camera, lights, materials need no reload).
     Scene& scene() { return scene_; }
+    const Scene& scene() const { return scene_; }
     const RenderVolume& volume() const { return volume_; }
     const FieldRegistry& fields() const { return fields_; }
     // Where the program rendering the scene publishes fields it computes itself each frame (a

@@ -61,6 +61,11 @@ std::vector<glm::vec3> ArapDrag::handleTargets(const ArapSpec& spec) const {
     return targets;
 }
 
+void ArapDrag::checkHandles(const ArapSpec& spec) const {
+    if (spec.handles.size() != handles_.size())
+        throw Error(what_ + "/deformer", "the handles changed after the deformer was built");
+}
+
 void ArapDrag::advanceToFrame(int frame, const SpecAtFrame& specAt) {
     if (frame < frame_) {
         deformer_.reset();
@@ -68,11 +73,16 @@ void ArapDrag::advanceToFrame(int frame, const SpecAtFrame& specAt) {
     }
     while (frame_ < frame) {
         const ArapSpec spec = specAt(frame_ + 1);
-        if (spec.handles.size() != handles_.size())
-            throw Error(what_ + "/deformer", "the handles changed after the deformer was built");
+        checkHandles(spec);
         deformer_.solve(handleTargets(spec), spec.iterations);
         ++frame_;
     }
+}
+
+std::vector<double> ArapDrag::dragCurrentFrame(const ArapSpec& spec) {
+    if (frame_ < 0) throw Error(what_ + "/deformer", "a drag needs a frame first (advanceToFrame)");
+    checkHandles(spec);
+    return deformer_.solve(handleTargets(spec), spec.iterations);
 }
 
 }  // namespace eikon::sim

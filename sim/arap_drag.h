@@ -24,17 +24,28 @@ public:
     using SpecAtFrame = std::function<ArapSpec(int frame)>;
     void advanceToFrame(int frame, const SpecAtFrame& specAt);
 
+    // A drag while the frame stands still (eikon view's mouse): the handles go where `spec` puts
+    // them and spec.iterations more iterations run from the current shape, so a run of small
+    // drags converges on the dragged pose as the paper's interactive editing does. The result
+    // depends on the drags' history (how many iterations each got), unlike a frame reached by
+    // advanceToFrame. Needs a frame reached by advanceToFrame; returns E after each iteration.
+    std::vector<double> dragCurrentFrame(const ArapSpec& spec);
+
     // Where the handle vertices go for `spec`'s handle motions: about each region's centre,
     // rotated then translated.
     std::vector<glm::vec3> handleTargets(const ArapSpec& spec) const;
 
     TriangleMesh mesh() const { return deformer_.deformedMesh(); }
+    const std::vector<glm::vec3>& positions() const { return deformer_.positions(); }
     int frame() const { return frame_; }
     double energy() const { return deformer_.energy(); }
     // Per handle, the rest mesh's vertices it moves.
     const std::vector<std::vector<std::uint32_t>>& handleVertices() const { return handles_; }
 
 private:
+    // Throws unless `spec` has the handles the deformer was built with.
+    void checkHandles(const ArapSpec& spec) const;
+
     ArapDeformer deformer_;
     std::vector<std::vector<std::uint32_t>> handles_;
     std::string what_;

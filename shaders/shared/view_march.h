@@ -225,14 +225,20 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
     return radiance + transmittance * environmentRadiance(dir);
 }
 
-// One pixel: a ray through the pixel's centre; rgb radiance, alpha the mean transmittance.
-vec4 renderPixel(int px, int py) {
+// The unit direction of the viewing ray through pixel (px, py)'s centre, row 0 at the top
+// (core/camera.h projectToImage is its inverse).
+vec3 pixelRayDirection(int px, int py) {
     const float u = ((float(px) + 0.5f) / float(params.image.x) * 2.0f - 1.0f) *
                     params.cameraOrigin.w;
     const float v = (1.0f - (float(py) + 0.5f) / float(params.image.y) * 2.0f) *
                     params.cameraOrigin.w / params.cameraRight.w;
-    const vec3 dir = normalize(vec3(params.cameraForward) + u * vec3(params.cameraRight) +
-                               v * vec3(params.cameraUp));
+    return normalize(vec3(params.cameraForward) + u * vec3(params.cameraRight) +
+                     v * vec3(params.cameraUp));
+}
+
+// One pixel: a ray through the pixel's centre; rgb radiance, alpha the mean transmittance.
+vec4 renderPixel(int px, int py) {
+    const vec3 dir = pixelRayDirection(px, py);
     vec3 transmittance;
     const vec3 radiance = integrateViewRay(vec3(params.cameraOrigin), dir, transmittance);
     return vec4(radiance, (transmittance.x + transmittance.y + transmittance.z) / 3.0f);

@@ -47,6 +47,13 @@ TEST_CASE("a mesh carries its optics as materials over its own two fields", "[sc
     point.positions = {glm::vec3(1.0f, 0.0f, 0.0f)};
     const glm::vec3 p = placeMesh(point, m).positions[0];
     CHECK(glm::length(p - glm::vec3(1.0f, 2.0f, 1.0f)) < 1e-5f);
+    CHECK(placePoint(point.positions[0], m) == p);
+    // A world motion undone into object space: the object-space step lands the placed point
+    // exactly that far in the world (x → −z, halved by the scale).
+    const glm::vec3 motion(0.3f, -0.2f, 0.5f);
+    const glm::vec3 local = unplaceMotion(motion, m);
+    CHECK(glm::length(local - glm::vec3(-0.25f, -0.1f, 0.15f)) < 1e-6f);
+    CHECK(glm::length(placePoint(point.positions[0] + local, m) - (p + motion)) < 1e-5f);
 }
 
 TEST_CASE("shapes make closed meshes; a quaternion rotation is read in glTF order",

@@ -37,15 +37,17 @@ inline void writeFile(const std::string& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
 }
 
-// Runs `eikon <args>` (arguments already quoted), stdout and stderr to files in `dir`.
-inline RunResult runEikon(const std::string& args, const std::string& dir) {
+// Runs `eikon <args>` (arguments already quoted), stdout and stderr to files in `dir`;
+// `launcher` (quoted) runs it, e.g. under xvfb-run for `eikon view`.
+inline RunResult runEikon(const std::string& args, const std::string& dir,
+                          const std::string& launcher = "") {
     namespace fs = std::filesystem;
     const std::string binary = std::string(EIKON_BINARY_DIR) + "/apps/eikon";
     REQUIRE(fs::exists(binary));
     const std::string out = dir + "/stdout.txt";
     const std::string err = dir + "/stderr.txt";
-    const std::string command =
-        quoted(binary) + " " + args + " >" + quoted(out) + " 2>" + quoted(err) + " </dev/null";
+    const std::string command = launcher + " " + quoted(binary) + " " + args + " >" + quoted(out) +
+                                " 2>" + quoted(err) + " </dev/null";
     const int status = std::system(command.c_str());
     RunResult r;
     REQUIRE(status != -1);
