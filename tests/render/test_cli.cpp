@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/image.h"
+#include "support/arap_ball_scene.h"
 #include "support/run_eikon.h"
 #include "support/test_paths.h"
 
@@ -346,20 +347,10 @@ TEST_CASE("eikon render fills the shared wine glass with a liquid that rises wit
 TEST_CASE("eikon render drags a mesh by keyframed ARAP handles", "[cli][arap]") {
     const std::string dir = scratchDir("cli_render_arap");
     const std::string scene = dir + "/squeeze.json";
-    writeFile(scene, R"({
-  "volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "resolution": 16},
-  "meshes": [{"name": "ball", "shape": {"type": "icosphere", "radius": 0.5, "subdivisions": 2},
-              "emission": [1, 0.6, 0.3], "absorption": [2, 2, 2],
-              "deformer": {"type": "arap", "handles": [
-                {"name": "base", "box": {"min": [-1, -1, -1], "max": [1, -0.3, 1]}},
-                {"name": "top", "sphere": {"center": [0, 0.5, 0], "radius": 0.2}}]}}],
-  "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
-  "render": {"width": 24, "height": 16},
-  "output": {"name": "ball", "png": true},
+    writeFile(scene, eikon::test::arapBallScene(24, 16, R"(,
   "time": {"fps": 12, "frame_start": 0, "frame_end": 3},
   "animation": [{"target": "/meshes/0/deformer/handles/1/translate",
-                 "times": [0, 0.25], "values": [[0, 0, 0], [0.3, -0.3, 0]]}]
-})");
+                 "times": [0, 0.25], "values": [[0, 0, 0], [0.3, -0.3, 0]]}])"));
     const RunResult r = runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/a"), dir);
     INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
     REQUIRE(r.exitCode == 0);

@@ -9,9 +9,11 @@
 #include <filesystem>
 #include <string>
 
+#include "support/arap_ball_scene.h"
 #include "support/run_eikon.h"
 #include "support/test_paths.h"
 
+using eikon::test::arapBallScene;
 using eikon::test::checkOneLineError;
 using eikon::test::lines;
 using eikon::test::quoted;
@@ -21,19 +23,6 @@ using eikon::test::scratchDir;
 using eikon::test::writeFile;
 
 namespace {
-
-// A ball held at its base, its top a handle, seen level from 3 units away with a 40° field.
-const char* kBallScene = R"({
-  "volume": {"bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]}, "resolution": 16},
-  "meshes": [{"name": "ball", "shape": {"type": "icosphere", "radius": 0.5, "subdivisions": 2},
-              "emission": [1, 0.6, 0.3], "absorption": [2, 2, 2],
-              "deformer": {"type": "arap", "handles": [
-                {"name": "base", "box": {"min": [-1, -1, -1], "max": [1, -0.3, 1]}},
-                {"name": "top", "sphere": {"center": [0, 0.5, 0], "radius": 0.2}}]}}],
-  "camera": {"position": [0, 0, 3], "look_at": [0, 0, 0], "horizontal_fov_deg": 40},
-  "render": {"width": 48, "height": 36},
-  "output": {"name": "ball", "png": true}
-})";
 
 struct HandleReport {
     float x = NAN, y = NAN;              // where its marker is on the image
@@ -66,8 +55,9 @@ TEST_CASE("eikon view drags an ARAP handle in the camera plane and prints the ke
 #else
     const std::string dir = scratchDir("cli_view_drag");
     const std::string scene = dir + "/ball.json";
-    writeFile(scene, kBallScene);
-    // Frame 2 orbits 10° about the vertical (as --exit-after does) and drags the top up 6 pixels.
+    writeFile(scene, arapBallScene(48, 36));
+    // The ball seen level from 3 units with a 40° field, 48x36 pixels. Frame 2 orbits 10° about the
+    // vertical (as --exit-after does) and drags the top up 6 pixels.
     const RunResult r =
         runEikon("view " + quoted(scene) + " --exit-after 2 --drag ball/top:0,-6 --screenshot " +
                      quoted(dir + "/shot.png"),
@@ -96,7 +86,7 @@ TEST_CASE("a bad --drag fails before the window opens, naming the handles there 
           "[cli][view][arap]") {
     const std::string dir = scratchDir("cli_view_bad_drag");
     const std::string scene = dir + "/ball.json";
-    writeFile(scene, kBallScene);
+    writeFile(scene, arapBallScene(48, 36));
     const RunResult unknown = runEikon("view " + quoted(scene) + " --drag ball/tip:0,5", dir);
     checkOneLineError(unknown, "--drag: ");
     CHECK(unknown.err.find("'ball/tip'") != std::string::npos);
