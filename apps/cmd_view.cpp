@@ -186,13 +186,14 @@ int runView(const ViewOptions& o) {
             driver.prepareFrame(renderer, frame);
             if (orbit) renderer.scene().camera = orbit->spec();  // the user's view wins
             if (pendingDrag != glm::vec2(0.0f) && rendered > 0) {
-                handles.locate(renderer, cameraNow(), width);
+                const CameraFrame camera = cameraNow();
+                handles.locate(renderer, camera, width);
                 if (scriptedNow)
                     std::printf(
                         "before the drag: %s\n",
                         handles.describeSelected(renderer, driver.timeOfFrame(frame)).c_str());
                 const auto start = std::chrono::steady_clock::now();
-                handles.drag(renderer, cameraNow(), width, pendingDrag);
+                handles.drag(renderer, camera, width, pendingDrag);
                 dragMs = std::chrono::duration<double, std::milli>(
                              std::chrono::steady_clock::now() - start)
                              .count();

@@ -132,7 +132,6 @@ glm::vec3 SceneDriver::handleCentre(const FrameRenderer& renderer, HandleRef h) 
 
 void SceneDriver::dragHandle(FrameRenderer& renderer, HandleRef h, glm::vec3 worldMotion) {
     Simulated& s = arapOf(h.mesh);
-    if (s.frameSet < 0) throw Error("eikon view", "a handle was dragged before any frame");
     s.dragOffsets[h.handle] += unplaceMotion(worldMotion, placementOf(renderer.scene(), h.mesh));
     s.arap->dragCurrentFrame(withDrags(renderer.scene(), s));
     renderer.setMesh(s.mesh, s.arap->mesh());

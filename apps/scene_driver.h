@@ -42,7 +42,7 @@ public:
     // The world position of the centre of the handle's vertices in the prepared frame's shape.
     glm::vec3 handleCentre(const FrameRenderer& renderer, HandleRef h) const;
     // Moves the handle by `worldMotion` (in the prepared frame's placement) and re-solves the
-    // prepared frame's shape.
+    // prepared frame's shape (sim/arap_drag.h throws before any frame was prepared).
     void dragHandle(FrameRenderer& renderer, HandleRef h, glm::vec3 worldMotion);
     // The handle's translation at the prepared frame with the drags in: the value a key of its
     // /meshes/i/deformer/handles/j/translate track needs to keep the dragged pose.

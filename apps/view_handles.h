@@ -21,8 +21,6 @@ class ViewHandles {
 public:
     ViewHandles(SceneDriver& driver, const Scene& scene);
 
-    bool empty() const { return handles_.empty(); }
-
     // Where the handles show on a `width`-wide image under `camera`, for the prepared frame:
     // after every prepared frame, before picking, dragging or drawing.
     void locate(const FrameRenderer& renderer, const CameraFrame& camera, int width);
