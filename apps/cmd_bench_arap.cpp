@@ -12,8 +12,8 @@
 #include "apps/bench_report.h"
 #include "apps/commands.h"
 #include "core/error.h"
-#include "sim/arap_deformer.h"
 #include "core/mesh_primitives.h"
+#include "sim/arap_deformer.h"
 
 namespace eikon::app {
 namespace {

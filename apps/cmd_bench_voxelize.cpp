@@ -115,9 +115,12 @@ int runBenchVoxelize(BenchVoxelizeOptions o) {
     for (const std::string& spec : splitList(o.meshes)) meshes.push_back(parseMesh(spec));
     bool cpu = false, gpu = false;
     for (const std::string& b : splitList(o.backends)) {
-        if (b == "cpu") cpu = true;
-        else if (b == "gpu") gpu = true;
-        else throw Error("--backends", "unknown backend '" + b + "' (expected cpu, gpu)");
+        if (b == "cpu")
+            cpu = true;
+        else if (b == "gpu")
+            gpu = true;
+        else
+            throw Error("--backends", "unknown backend '" + b + "' (expected cpu, gpu)");
     }
     const auto threadCap = limitThreads(o.threads);
 
@@ -129,10 +132,12 @@ int runBenchVoxelize(BenchVoxelizeOptions o) {
     printBenchHeader(stdout, o.threads);
     std::printf("# volume %d^3, unit sphere %.1f voxels across (voxel %.6f); median of %d runs\n",
                 o.resolution, o.span, double(voxel), o.reps);
-    std::printf("# voxelize: mesh upload, parity flips, scan, 64-sample coverage (GPU: to "
-                "glFinish); blur: the 9^3 Gaussian of n (sigma 1.5 voxels)\n");
-    std::printf("# volume error: sum of coverage x voxel volume against 4/3 pi and against the "
-                "polyhedron's own volume\n");
+    std::printf(
+        "# voxelize: mesh upload, parity flips, scan, 64-sample coverage (GPU: to "
+        "glFinish); blur: the 9^3 Gaussian of n (sigma 1.5 voxels)\n");
+    std::printf(
+        "# volume error: sum of coverage x voxel volume against 4/3 pi and against the "
+        "polyhedron's own volume\n");
 
     std::unique_ptr<GlContext> context;
     std::unique_ptr<MeshVoxelizerGpu> voxelizer;
@@ -164,7 +169,8 @@ int runBenchVoxelize(BenchVoxelizeOptions o) {
         };
         if (cpu) {
             std::vector<float> coverage;
-            const auto vox = timeRuns(o.reps, [&] { coverage = voxelizeCoverageCpu(m.mesh, volume); });
+            const auto vox =
+                timeRuns(o.reps, [&] { coverage = voxelizeCoverageCpu(m.mesh, volume); });
             const auto blur = timeRuns(o.reps, [&] {
                 (void)blurCoverageCpu(coverage, volume.resolution, IndexBlurSettings{});
             });

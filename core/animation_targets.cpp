@@ -82,13 +82,16 @@ std::optional<AnimationTarget> meshTarget(const Scene& scene, int i, const std::
         if (key != keys[k]) continue;
         const int m = materialNamed(scene, name);
         if (m < 0)
-            why = "mesh '" + name + "' has no absorption, scattering or emission to animate (give "
+            why = "mesh '" + name +
+                  "' has no absorption, scattering or emission to animate (give "
                   "it a non-zero value to start from)";
         if (m < 0) return std::nullopt;
         return make(kinds[k], m, 3, 0.0, 1e30);
     }
-    why = "a mesh animates translate, rotation, scale, ior, absorption, scattering or emission, "
-          "not '" + key + "'";
+    why =
+        "a mesh animates translate, rotation, scale, ior, absorption, scattering or emission, "
+        "not '" +
+        key + "'";
     return std::nullopt;
 }
 
@@ -132,8 +135,8 @@ std::optional<AnimationTarget> lightTarget(const Scene& scene, int i, const std:
         return make(TargetKind::LightSoftness, i, 1, 0.0, 90.0);
     why = "this light animates " + std::string(positioned ? "position, " : "") +
           (directed ? "direction, " : "") + "color, intensity" +
-          (light.type == LightType::Spot ? ", cone_angle_deg, cone_softness_deg" : "") +
-          ", not '" + key + "'";
+          (light.type == LightType::Spot ? ", cone_angle_deg, cone_softness_deg" : "") + ", not '" +
+          key + "'";
     return std::nullopt;
 }
 
@@ -161,8 +164,10 @@ std::optional<AnimationTarget> sourceTarget(int i, const std::string& key, std::
     if (key == "density_rate") return make(TargetKind::SourceDensityRate, i, 1, 0.0, 1e30);
     if (key == "temperature_rate") return make(TargetKind::SourceTemperatureRate, i, 1);
     if (key == "velocity_rate") return make(TargetKind::SourceVelocityRate, i, 1, 0.0, 1e30);
-    why = "a smoke source animates center, velocity, density_rate, temperature_rate or "
-          "velocity_rate, not '" + key + "'";
+    why =
+        "a smoke source animates center, velocity, density_rate, temperature_rate or "
+        "velocity_rate, not '" +
+        key + "'";
     return std::nullopt;
 }
 
@@ -180,8 +185,8 @@ std::optional<AnimationTarget> simulationTarget(const Scene& scene,
     const size_t count = scene.simulation->sources.size();
     const int i = parseIndex(p[2]);
     if (i < 0 || size_t(i) >= count) {
-        why = "no simulation source " + p[2] + " (the simulation has " + std::to_string(count) +
-              ")";
+        why =
+            "no simulation source " + p[2] + " (the simulation has " + std::to_string(count) + ")";
         return std::nullopt;
     }
     return sourceTarget(i, p[3], why);
@@ -266,8 +271,12 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
     const glm::vec3 v3(v[0], v[1], v[2]);
     const size_t i = size_t(t.index);
     switch (t.kind) {
-        case TargetKind::MeshTranslate: scene.meshes[i].translation = v3; break;
-        case TargetKind::MeshScale: scene.meshes[i].scale = v3; break;
+        case TargetKind::MeshTranslate:
+            scene.meshes[i].translation = v3;
+            break;
+        case TargetKind::MeshScale:
+            scene.meshes[i].scale = v3;
+            break;
         case TargetKind::MeshRotation: {
             const glm::quat q(value[3], value[0], value[1], value[2]);  // [x, y, z, w]
             const float length = glm::length(q);
@@ -284,12 +293,18 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
                 scene.meshes[i].arap->handles[size_t(t.handle)].rotation = q / length;
             break;
         }
-        case TargetKind::LightPosition: scene.lights[i].position = v3; break;
+        case TargetKind::LightPosition:
+            scene.lights[i].position = v3;
+            break;
         case TargetKind::LightDirection:
             if (glm::length(v3) > 0.0f) scene.lights[i].direction = glm::normalize(v3);
             break;
-        case TargetKind::LightColor: scene.lights[i].color = v3; break;
-        case TargetKind::LightIntensity: scene.lights[i].intensity = v[0]; break;
+        case TargetKind::LightColor:
+            scene.lights[i].color = v3;
+            break;
+        case TargetKind::LightIntensity:
+            scene.lights[i].intensity = v[0];
+            break;
         case TargetKind::LightCone:
             scene.lights[i].coneAngleDeg = v[0];
             scene.lights[i].coneSoftnessDeg = std::min(scene.lights[i].coneSoftnessDeg, v[0]);
@@ -297,21 +312,45 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
         case TargetKind::LightSoftness:
             scene.lights[i].coneSoftnessDeg = std::min(v[0], scene.lights[i].coneAngleDeg);
             break;
-        case TargetKind::CameraPosition: scene.camera.position = v3; break;
-        case TargetKind::CameraLookAt: scene.camera.lookAt = v3; break;
-        case TargetKind::CameraFov: scene.camera.horizontalFovDeg = v[0]; break;
-        case TargetKind::MaterialAbsorption: scene.materials[i].absorption = v3; break;
-        case TargetKind::MaterialScattering: scene.materials[i].scattering = v3; break;
-        case TargetKind::MaterialEmission: scene.materials[i].emission = v3; break;
-        case TargetKind::MaterialIor: scene.materials[i].ior = v[0]; break;
-        case TargetKind::MaterialG: scene.materials[i].g = v[0]; break;
-        case TargetKind::SourceCenter: moveShape(scene.simulation->sources[i].shape, v3); break;
-        case TargetKind::SourceVelocity: scene.simulation->sources[i].velocity = v3; break;
-        case TargetKind::SourceDensityRate: scene.simulation->sources[i].densityRate = v[0]; break;
+        case TargetKind::CameraPosition:
+            scene.camera.position = v3;
+            break;
+        case TargetKind::CameraLookAt:
+            scene.camera.lookAt = v3;
+            break;
+        case TargetKind::CameraFov:
+            scene.camera.horizontalFovDeg = v[0];
+            break;
+        case TargetKind::MaterialAbsorption:
+            scene.materials[i].absorption = v3;
+            break;
+        case TargetKind::MaterialScattering:
+            scene.materials[i].scattering = v3;
+            break;
+        case TargetKind::MaterialEmission:
+            scene.materials[i].emission = v3;
+            break;
+        case TargetKind::MaterialIor:
+            scene.materials[i].ior = v[0];
+            break;
+        case TargetKind::MaterialG:
+            scene.materials[i].g = v[0];
+            break;
+        case TargetKind::SourceCenter:
+            moveShape(scene.simulation->sources[i].shape, v3);
+            break;
+        case TargetKind::SourceVelocity:
+            scene.simulation->sources[i].velocity = v3;
+            break;
+        case TargetKind::SourceDensityRate:
+            scene.simulation->sources[i].densityRate = v[0];
+            break;
         case TargetKind::SourceTemperatureRate:
             scene.simulation->sources[i].temperatureRate = v[0];
             break;
-        case TargetKind::SourceVelocityRate: scene.simulation->sources[i].velocityRate = v[0]; break;
+        case TargetKind::SourceVelocityRate:
+            scene.simulation->sources[i].velocityRate = v[0];
+            break;
     }
 }
 

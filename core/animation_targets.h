@@ -12,12 +12,30 @@
 namespace eikon {
 
 enum class TargetKind {
-    MeshTranslate, MeshRotation, MeshScale,
-    HandleTranslate, HandleRotation,  // an ARAP deformer's handle
-    LightPosition, LightDirection, LightColor, LightIntensity, LightCone, LightSoftness,
-    CameraPosition, CameraLookAt, CameraFov,
-    MaterialAbsorption, MaterialScattering, MaterialEmission, MaterialIor, MaterialG,
-    SourceCenter, SourceVelocity, SourceDensityRate, SourceTemperatureRate, SourceVelocityRate,
+    MeshTranslate,
+    MeshRotation,
+    MeshScale,
+    HandleTranslate,
+    HandleRotation,  // an ARAP deformer's handle
+    LightPosition,
+    LightDirection,
+    LightColor,
+    LightIntensity,
+    LightCone,
+    LightSoftness,
+    CameraPosition,
+    CameraLookAt,
+    CameraFov,
+    MaterialAbsorption,
+    MaterialScattering,
+    MaterialEmission,
+    MaterialIor,
+    MaterialG,
+    SourceCenter,
+    SourceVelocity,
+    SourceDensityRate,
+    SourceTemperatureRate,
+    SourceVelocityRate,
 };
 
 struct AnimationTarget {
@@ -25,7 +43,7 @@ struct AnimationTarget {
     // mesh, light, material (in Scene::materials) or smoke source (in simulation->sources) index
     int index = 0;
     int handle = 0;  // HandleTranslate, HandleRotation: the handle's index in the deformer
-    int width = 1;  // numbers per value: 1, 3, or 4 (a quaternion [x, y, z, w])
+    int width = 1;   // numbers per value: 1, 3, or 4 (a quaternion [x, y, z, w])
     double lo = -1e30, hi = 1e30;  // the valid range of each number (quaternions: unit length)
     bool rotation = false;         // a quaternion: slerp, normalized
 };
@@ -33,8 +51,7 @@ struct AnimationTarget {
 // The target `pointer` names in `scene`, or nothing with `why` set to the reason (unknown path,
 // index out of range, an automatic camera, a mesh without that optic).
 std::optional<AnimationTarget> resolveAnimationTarget(const Scene& scene,
-                                                      const std::string& pointer,
-                                                      std::string& why);
+                                                      const std::string& pointer, std::string& why);
 
 // The pointers a message can list as examples.
 const char* animationTargetExamples();

@@ -39,7 +39,8 @@ TriangleMesh icosphere(glm::vec3 center, float radius, int subdivisions) {
         std::vector<glm::uvec3> finer;
         finer.reserve(faces.size() * 4);
         for (const glm::uvec3& f : faces) {
-            const unsigned ab = midpoint(f.x, f.y), bc = midpoint(f.y, f.z), ca = midpoint(f.z, f.x);
+            const unsigned ab = midpoint(f.x, f.y), bc = midpoint(f.y, f.z),
+                           ca = midpoint(f.z, f.x);
             finer.push_back({f.x, ab, ca});
             finer.push_back({f.y, bc, ab});
             finer.push_back({f.z, ca, bc});
@@ -63,10 +64,10 @@ TriangleMesh uvSphere(glm::vec3 center, float radius, int slices, int stacks) {
         const double theta = pi * i / stacks;
         for (int j = 0; j < slices; ++j) {
             const double phi = 2.0 * pi * j / slices;
-            mesh.positions.push_back(
-                center + radius * glm::vec3(float(std::sin(theta) * std::cos(phi)),
-                                            float(std::sin(theta) * std::sin(phi)),
-                                            float(std::cos(theta))));
+            mesh.positions.push_back(center +
+                                     radius * glm::vec3(float(std::sin(theta) * std::cos(phi)),
+                                                        float(std::sin(theta) * std::sin(phi)),
+                                                        float(std::cos(theta))));
         }
     }
     mesh.positions.push_back(center + radius * glm::vec3(0.0f, 0.0f, -1.0f));  // south pole
@@ -86,8 +87,8 @@ TriangleMesh uvSphere(glm::vec3 center, float radius, int slices, int stacks) {
 TriangleMesh boxMesh(glm::vec3 min, glm::vec3 max) {
     TriangleMesh mesh;
     for (int i = 0; i < 8; ++i)  // bit 0: x, bit 1: y, bit 2: z at max
-        mesh.positions.push_back({(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y,
-                                  (i & 4) ? max.z : min.z});
+        mesh.positions.push_back(
+            {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z});
     mesh.triangles = {{0, 2, 3}, {0, 3, 1},   // z = min, normal −z
                       {4, 5, 7}, {4, 7, 6},   // z = max, +z
                       {0, 1, 5}, {0, 5, 4},   // y = min, −y

@@ -83,13 +83,15 @@ RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields,
     if (scene.volume.autoResolution) {
         float voxel = 0.0f;
         if (!fieldMaterials.empty()) {
-            const openvdb::Vec3d vs = materialField(scene, fields, fieldMaterials[0]).grid->voxelSize();
+            const openvdb::Vec3d vs =
+                materialField(scene, fields, fieldMaterials[0]).grid->voxelSize();
             voxel = float(std::min({vs.x(), vs.y(), vs.z()}));
         } else {
             // Meshes alone: N voxels along the longest axis, margins included.
             const float n = float(std::min(scene.volume.maxResolution, kMeshVoxelsAcross));
-            voxel = scene.volume.autoBounds ? longestAxis(meshes) / std::max(1.0f, n - 2.0f * margin)
-                                            : longestAxis(v.bounds) / n;
+            voxel = scene.volume.autoBounds
+                        ? longestAxis(meshes) / std::max(1.0f, n - 2.0f * margin)
+                        : longestAxis(v.bounds) / n;
         }
         if (scene.volume.autoBounds && meshes.valid())
             v.bounds = v.bounds.unite({meshes.min - margin * voxel, meshes.max + margin * voxel});
@@ -104,7 +106,8 @@ RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields,
             // L' = L + 2·margin·L'/N per axis.
             const glm::vec3 n(v.resolution);
             const Bounds3 all = v.bounds.unite(meshes);
-            const glm::vec3 grown = all.size() / glm::max(glm::vec3(1e-6f), 1.0f - 2.0f * margin / n);
+            const glm::vec3 grown =
+                all.size() / glm::max(glm::vec3(1e-6f), 1.0f - 2.0f * margin / n);
             const glm::vec3 pad = 0.5f * (grown - all.size());
             v.bounds = v.bounds.unite({meshes.min - pad, meshes.max + pad});
         }

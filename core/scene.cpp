@@ -18,8 +18,8 @@
 #include "core/error.h"
 #include "core/field_registry.h"
 #include "core/json_reader.h"
-#include "core/scene_helpers.h"
 #include "core/scene_animation.h"
+#include "core/scene_helpers.h"
 #include "core/scene_meshes.h"
 #include "core/scene_receivers.h"
 #include "core/scene_simulation.h"
@@ -289,8 +289,7 @@ SourceSpec readSource(const Value& value, const fs::path& sceneDirectory) {
     source.jsonPath = value.pointer();
     // The type decides which other keys belong, so it is read first.
     const std::string type =
-        object
-            .required("type", "\"vdb\", \"vdb_sequence\", \"sphere\", \"box\" or \"simulation\"")
+        object.required("type", "\"vdb\", \"vdb_sequence\", \"sphere\", \"box\" or \"simulation\"")
             .choice({"vdb", "vdb_sequence", "sphere", "box", "simulation"});
     object.setKind("a " + type + " source");
     if (type == "simulation") {
@@ -657,15 +656,13 @@ void addMeshMaterials(const Value& meshes, ParsedMeshes parsed, Scene& scene) {
         for (const MaterialSpec& m : scene.materials)
             if (m.name == parsed.meshes[i].name || m.name == parsed.meshes[i].name + ".n")
                 meshes.element(i).child("name").fail("mesh name \"" + parsed.meshes[i].name +
-                                                     "\" clashes with material \"" + m.name +
-                                                     "\"");
+                                                     "\" clashes with material \"" + m.name + "\"");
     if (scene.materials.size() + parsed.materials.size() > kMaxMaterials)
         meshes.fail("the materials (" + std::to_string(scene.materials.size()) +
                     ") and the meshes' (" + std::to_string(parsed.materials.size()) +
                     ": one for n, one for absorption/scattering/emission per mesh) exceed " +
                     std::to_string(kMaxMaterials) + " material slots");
-    scene.materials.insert(scene.materials.end(), parsed.materials.begin(),
-                           parsed.materials.end());
+    scene.materials.insert(scene.materials.end(), parsed.materials.begin(), parsed.materials.end());
     scene.meshes = std::move(parsed.meshes);
 }
 

@@ -127,11 +127,11 @@ struct WaterDropletSpec {
 };
 
 struct WaterSpec {
-    glm::vec2 size{2.0f, 2.0f};  // x and z extent, centred on the object's origin
-    glm::ivec2 cells{64, 64};    // nx, nz
-    float depth = 0.3f;          // rest surface above the bottom (y = 0)
-    float waveSpeed = 1.0f;      // c, scene units per second
-    float damping = 0.0f;        // γ, per second
+    glm::vec2 size{2.0f, 2.0f};              // x and z extent, centred on the object's origin
+    glm::ivec2 cells{64, 64};                // nx, nz
+    float depth = 0.3f;                      // rest surface above the bottom (y = 0)
+    float waveSpeed = 1.0f;                  // c, scene units per second
+    float damping = 0.0f;                    // γ, per second
     std::vector<WaterDropletSpec> droplets;  // in any order
 };
 
@@ -166,8 +166,8 @@ struct JellySpec {
 struct ArapHandleSpec {
     std::string name;
     bool sphere = true;
-    glm::vec3 center{0.0f};  // sphere; a box's centre is filled in as the pivot too
-    float radius = 0.1f;     // sphere
+    glm::vec3 center{0.0f};                // sphere; a box's centre is filled in as the pivot too
+    float radius = 0.1f;                   // sphere
     glm::vec3 boxMin{0.0f}, boxMax{0.0f};  // box
     glm::vec3 translation{0.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};  // w, x, y, z

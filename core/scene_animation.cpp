@@ -43,14 +43,15 @@ void readKey(const Value& value, const AnimationTarget& target, bool tangent,
         out.push_back(x);
     }
     if (target.rotation && !tangent && !(std::abs(std::sqrt(length2) - 1.0f) < 1e-3f))
-        value.fail("expected a unit quaternion [x, y, z, w] (length within 1e-3 of 1), got length " +
-                   std::to_string(std::sqrt(length2)));
+        value.fail(
+            "expected a unit quaternion [x, y, z, w] (length within 1e-3 of 1), got length " +
+            std::to_string(std::sqrt(length2)));
 }
 
 std::vector<std::vector<float>> readKeys(const Value& value, const AnimationTarget& target,
                                          bool tangent, std::size_t count) {
-    const std::string form = "an array of " + std::to_string(count) + " keys, each " +
-                             keyForm(target.width);
+    const std::string form =
+        "an array of " + std::to_string(count) + " keys, each " + keyForm(target.width);
     const std::vector<Value> keys = value.elements(form, kMaxKeys);
     if (keys.size() != count)
         value.fail("expected " + std::to_string(count) + " keys (one per time), got " +
@@ -70,7 +71,8 @@ AnimationTrack readTrack(const Value& value, const Scene& scene) {
     const Value target = object.required("target", "a JSON pointer such as \"/lights/0/position\"");
     track.target = target.nonEmptyString();
     std::string why;
-    const std::optional<AnimationTarget> resolved = resolveAnimationTarget(scene, track.target, why);
+    const std::optional<AnimationTarget> resolved =
+        resolveAnimationTarget(scene, track.target, why);
     if (!resolved) target.fail(why);
     track.width = resolved->width;
     if (auto interpolation = object.optional("interpolation")) {
@@ -91,7 +93,8 @@ AnimationTrack readTrack(const Value& value, const Scene& scene) {
     }
     if (track.times.empty()) times.failExpected("a non-empty array of seconds, increasing");
     const std::size_t n = track.times.size();
-    const auto values = readKeys(object.required("values", "one key per time"), *resolved, false, n);
+    const auto values =
+        readKeys(object.required("values", "one key per time"), *resolved, false, n);
     const bool cubic = track.interpolation == Interpolation::CubicSpline;
     std::vector<std::vector<float>> in, out;
     if (cubic) {
@@ -123,9 +126,8 @@ std::vector<AnimationTrack> readAnimation(const Value& value, const Scene& scene
         AnimationTrack track = readTrack(elements[i], scene);
         for (std::size_t j = 0; j < tracks.size(); ++j)
             if (tracks[j].target == track.target)
-                elements[i].child("target").fail("\"" + track.target +
-                                                 "\" is animated already by " +
-                                                 elements[j].pointer());
+                elements[i].child("target").fail(
+                    "\"" + track.target + "\" is animated already by " + elements[j].pointer());
         tracks.push_back(std::move(track));
     }
     return tracks;

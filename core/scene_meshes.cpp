@@ -80,7 +80,8 @@ void readShape(const Value& value, MeshObjectSpec& mesh, std::string& containerN
     } else if (type == "icosphere") {
         object.setKind("an icosphere shape");
         mesh.shape = MeshShapeType::Icosphere;
-        mesh.radius = object.required("radius", "a number > 0").floatNumber(Range::greaterThan(0.0));
+        mesh.radius =
+            object.required("radius", "a number > 0").floatNumber(Range::greaterThan(0.0));
         if (auto s = object.optional("subdivisions"))
             mesh.subdivisions = int(s->integer(0, kMaxSubdivisions));
     } else {
@@ -134,7 +135,8 @@ JellyPokeSpec readPoke(const Value& value) {
 JellySpec readJelly(Object& object) {
     JellySpec j;
     if (auto m = object.optional("mass")) j.mass = m->floatNumber(Range::greaterThan(0.0));
-    if (auto k = object.optional("stiffness")) j.stiffness = k->floatNumber(Range::greaterThan(0.0));
+    if (auto k = object.optional("stiffness"))
+        j.stiffness = k->floatNumber(Range::greaterThan(0.0));
     if (auto k = object.optional("bend_stiffness"))
         j.bendStiffness = k->floatNumber(Range::atLeast(0.0));
     if (auto k = object.optional("volume_stiffness"))
@@ -156,13 +158,11 @@ ArapHandleSpec readHandle(const Value& value) {
     const auto sphere = object.optional("sphere");
     const auto box = object.optional("box");
     if (sphere && box) box->fail("give either \"sphere\" or \"box\", not both");
-    if (!sphere && !box)
-        object.failAt("sphere", "a handle needs a region: \"sphere\" or \"box\"");
+    if (!sphere && !box) object.failAt("sphere", "a handle needs a region: \"sphere\" or \"box\"");
     if (sphere) {
         Object region(*sphere, "a sphere region");
         h.center = region.required("center", "an array of 3 numbers [x, y, z]").vec3();
-        h.radius =
-            region.required("radius", "a number > 0").floatNumber(Range::greaterThan(0.0));
+        h.radius = region.required("radius", "a number > 0").floatNumber(Range::greaterThan(0.0));
         region.finish();
     } else {
         Object region(*box, "a box region");
@@ -245,8 +245,9 @@ MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDi
     if (mesh.shape == MeshShapeType::Liquid)
         for (const char* key : {"translate", "rotation", "rotate_deg", "scale"})
             if (auto placed = object.optional(key))
-                placed->fail("a liquid stands in its container and takes the container's "
-                             "placement; place the container instead");
+                placed->fail(
+                    "a liquid stands in its container and takes the container's "
+                    "placement; place the container instead");
     if (auto t = object.optional("translate")) mesh.translation = t->vec3();
     readRotation(object, mesh);
     if (auto s = object.optional("scale")) {
@@ -284,10 +285,10 @@ void resolveContainer(const Value& at, const std::string& name,
                 "\" (a liquid's container must come before it in \"meshes\")");
     if (it->shape == MeshShapeType::Water || it->shape == MeshShapeType::Liquid)
         at.fail("mesh \"" + name + "\" is " +
-                (it->shape == MeshShapeType::Water ? "water" : "a liquid") +
-                ", not a container");
+                (it->shape == MeshShapeType::Water ? "water" : "a liquid") + ", not a container");
     if (it->jelly || it->arap)
-        at.fail("mesh \"" + name + "\" has a deformer: a liquid in a deforming container is "
+        at.fail("mesh \"" + name +
+                "\" has a deformer: a liquid in a deforming container is "
                 "not supported");
     liquid.container = int(it - earlier.begin());  // its placement: core/mesh_placement.h
 }
@@ -314,8 +315,9 @@ ParsedMeshes readMeshes(const Value& value, const std::filesystem::path& sceneDi
                                 optics.scattering != glm::vec3(0.0f) ||
                                 optics.emission != glm::vec3(0.0f);
         if (!volumetric && optics.ior == 1.0f)
-            elements[i].fail("a mesh needs optics: \"ior\" > 1, \"absorption\", \"scattering\" or "
-                             "\"emission\"");
+            elements[i].fail(
+                "a mesh needs optics: \"ior\" > 1, \"absorption\", \"scattering\" or "
+                "\"emission\"");
         if (volumetric) {
             MaterialSpec coverage = optics;
             coverage.field = fields.coverage;

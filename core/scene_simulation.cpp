@@ -161,7 +161,8 @@ SimShapeSpec readMeshObstacle(Object& object, const std::vector<MeshObjectSpec>&
                   (mesh.jelly ? "jelly" : "water") +
                   "); a smoke obstacle must stand still (moving solids are not simulated)");
     if (mesh.arap)
-        name.fail("mesh '" + text + "' is dragged by ARAP handles; a smoke obstacle must stand "
+        name.fail("mesh '" + text +
+                  "' is dragged by ARAP handles; a smoke obstacle must stand "
                   "still (moving solids are not simulated)");
     if (mesh.shape == MeshShapeType::Liquid)
         name.fail("mesh '" + text + "' is a liquid, not a solid the smoke flows around");

@@ -35,7 +35,8 @@ MeshFields::MeshFields(const Scene& scene) : meshes_(scene.meshes.size()) {
 
 void MeshFields::setMesh(const Scene& scene, size_t index, TriangleMesh objectSpace) {
     if (index >= meshes_.size())
-        throw Error(scene.path, "mesh " + std::to_string(index) + " does not exist (the scene has " +
+        throw Error(scene.path, "mesh " + std::to_string(index) +
+                                    " does not exist (the scene has " +
                                     std::to_string(meshes_.size()) + ")");
     const MeshObjectSpec& spec = scene.meshes[index];
     const std::string what = scene.path + ":" + spec.jsonPath + " (mesh '" + spec.name + "')";
@@ -75,10 +76,11 @@ const TriangleMesh& MeshFields::placed(const Scene& scene, size_t index) {
 
 std::vector<Bounds3> MeshFields::worldBounds(const Scene& scene) {
     if (scene.meshes.size() != meshes_.size())
-        throw Error(scene.path + ":/meshes", "meshes cannot be added or removed after rendering "
-                                             "started (had " + std::to_string(meshes_.size()) +
-                                                 ", now " + std::to_string(scene.meshes.size()) +
-                                                 ")");
+        throw Error(scene.path + ":/meshes",
+                    "meshes cannot be added or removed after rendering "
+                    "started (had " +
+                        std::to_string(meshes_.size()) + ", now " +
+                        std::to_string(scene.meshes.size()) + ")");
     std::vector<Bounds3> out;
     for (size_t i = 0; i < meshes_.size(); ++i) {
         const MeshObjectSpec& spec = scene.meshes[i];

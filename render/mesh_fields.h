@@ -54,7 +54,7 @@ private:
     const TriangleMesh& placed(const Scene& scene, size_t index);
 
     std::vector<Mesh> meshes_;
-    std::uint64_t composed_ = 0;  // version of the fields written to `dense`
+    std::uint64_t composed_ = 0;             // version of the fields written to `dense`
     std::vector<unsigned char> composeKey_;  // what they were made from
     int voxelizations_ = 0;
 };

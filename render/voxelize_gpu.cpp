@@ -16,7 +16,8 @@ template <typename T>
 void uploadBuffer(GLuint& buffer, const std::vector<T>& data) {
     if (!buffer) glGenBuffers(1, &buffer);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<size_t>(data.size() * sizeof(T), 16)),
+    glBufferData(GL_SHADER_STORAGE_BUFFER,
+                 GLsizeiptr(std::max<size_t>(data.size() * sizeof(T), 16)),
                  data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }

@@ -83,7 +83,8 @@ std::vector<glm::vec3> Jelly::forces(const std::vector<glm::vec3>& x) const {
     if (s.volumeStiffness > 0.0f) {  // E = ½ k_v V₀ (V/V₀ − 1)²; ∂V/∂x_a = Σ (x_b × x_c)/6
         double volume = 0.0;
         for (const glm::uvec3& t : rest_.triangles)
-            volume += glm::dot(glm::dvec3(x[t.x]), glm::cross(glm::dvec3(x[t.y]), glm::dvec3(x[t.z])));
+            volume +=
+                glm::dot(glm::dvec3(x[t.x]), glm::cross(glm::dvec3(x[t.y]), glm::dvec3(x[t.z])));
         volume /= 6.0;
         const float scale = float(-double(s.volumeStiffness) * (volume / restVolume_ - 1.0) / 6.0);
         for (const glm::uvec3& t : rest_.triangles) {

@@ -5,10 +5,10 @@
 // potential ½·k_v·V₀·(V/V₀ − 1)² keeps the enclosed volume, so the body wobbles instead of
 // collapsing. Forces derive from potentials (springs, volume, gravity), integrated by velocity
 // Verlet (symplectic): with no damping and no floor the total energy oscillates about its start
-// and does not drift. A floor (the plane y = floorY, when set) is a hard constraint: a vertex that crosses it
-// is put back on it, loses its velocity into it (an inelastic contact) and is slowed by friction,
-// so nothing passes through; pokes add velocity to the vertices near a point. A dropped jelly
-// lands, wobbles and comes to rest on the floor.
+// and does not drift. A floor (the plane y = floorY, when set) is a hard constraint: a vertex that
+// crosses it is put back on it, loses its velocity into it (an inelastic contact) and is slowed by
+// friction, so nothing passes through; pokes add velocity to the vertices near a point. A dropped
+// jelly lands, wobbles and comes to rest on the floor.
 #include <vector>
 
 #include <glm/vec3.hpp>

@@ -95,7 +95,7 @@ public:
 
     const SmokeSettings& settings() const { return settings_; }
     const MacGrid& grid() const { return grid_; }
-    MacGrid& grid() { return grid_; }  // initial conditions, tests
+    MacGrid& grid() { return grid_; }     // initial conditions, tests
     int frame() const { return frame_; }  // frames stepped so far
     int stepCount() const { return steps_; }
 

@@ -59,7 +59,8 @@ void WaterSurface::applyDroplet(const Droplet& d) {
             const glm::vec2 x(-0.5f * settings_.size.x + (float(i) + 0.5f) * dx_.x,
                               -0.5f * settings_.size.y + (float(k) + 0.5f) * dx_.y);
             const glm::vec2 r = x - d.position;
-            const float v = d.depth * std::exp(-(r.x * r.x + r.y * r.y) / (2.0f * d.radius * d.radius));
+            const float v =
+                d.depth * std::exp(-(r.x * r.x + r.y * r.y) / (2.0f * d.radius * d.radius));
             dent[index(i, k)] = v;
             removed += v;
         }
@@ -86,7 +87,8 @@ void WaterSurface::step(double dt) {
             const float east = i + 1 < n.x ? h_[index(i + 1, k)] : c;
             const float south = k > 0 ? h_[index(i, k - 1)] : c;
             const float north = k + 1 < n.y ? h_[index(i, k + 1)] : c;
-            const float laplacian = ax * ((east - c) - (c - west)) + az * ((north - c) - (c - south));
+            const float laplacian =
+                ax * ((east - c) - (c - west)) + az * ((north - c) - (c - south));
             next[index(i, k)] = c + keep * (c - previous_[index(i, k)]) + laplacian;
         }
     });
@@ -147,12 +149,12 @@ TriangleMesh WaterSurface::mesh() const {
     // Outward: the surface faces +y, the bottom −y. (x × z = −y, hence the orders.)
     for (int k = 0; k < n.y; ++k)
         for (int i = 0; i < n.x; ++i) {
-            const unsigned a = corner(0, i, k), b = corner(0, i + 1, k), c = corner(0, i + 1, k + 1),
-                           d = corner(0, i, k + 1);
+            const unsigned a = corner(0, i, k), b = corner(0, i + 1, k),
+                           c = corner(0, i + 1, k + 1), d = corner(0, i, k + 1);
             m.triangles.push_back({a, c, b});
             m.triangles.push_back({a, d, c});
-            const unsigned e = corner(1, i, k), f = corner(1, i + 1, k), g = corner(1, i + 1, k + 1),
-                           h = corner(1, i, k + 1);
+            const unsigned e = corner(1, i, k), f = corner(1, i + 1, k),
+                           g = corner(1, i + 1, k + 1), h = corner(1, i, k + 1);
             m.triangles.push_back({e, f, g});
             m.triangles.push_back({e, g, h});
         }

@@ -73,7 +73,7 @@ private:
     // Heights above the rest surface (not above the bottom: small numbers keep more bits, so the
     // volume drifts less by rounding).
     std::vector<float> h_, previous_;
-    std::vector<Droplet> pending_;     // droplets not yet applied, by time
+    std::vector<Droplet> pending_;  // droplets not yet applied, by time
 };
 
 }  // namespace eikon::sim

@@ -25,7 +25,9 @@ int sweepAxis(vec3 d) {
     return a.y >= a.z ? 1 : 2;
 }
 
-int sweepOrder(vec3 d, int axis) { return d[axis] >= 0.0f ? 1 : -1; }
+int sweepOrder(vec3 d, int axis) {
+    return d[axis] >= 0.0f ? 1 : -1;
+}
 
 // Transmittance from voxel v toward light l by marching (point and spot lights, the first slice
 // of a sweep, and voxels whose path leaves through a side of the volume).

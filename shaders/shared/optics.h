@@ -86,4 +86,3 @@ vec3 lightIrradiance(int l, vec3 x, EK_OUT(vec3) toLight, EK_OUT(float) lightDis
     }
     return radiance * falloff;
 }
-

@@ -39,9 +39,9 @@
 // GpuPhoton.position.w: where a photon is in its life.
 #define EK_PHOTON_INACTIVE 0  // its ray missed the box or carried nothing: it never existed
 #define EK_PHOTON_ACTIVE 1
-#define EK_PHOTON_ESCAPED 2  // left the box; position and direction are its exit
-#define EK_PHOTON_DROPPED 3  // its flux fell below its threshold, or its march went degenerate
-#define EK_PHOTON_CUT 4      // still active after the step limit (a trapped path)
+#define EK_PHOTON_ESCAPED 2   // left the box; position and direction are its exit
+#define EK_PHOTON_DROPPED 3   // its flux fell below its threshold, or its march went degenerate
+#define EK_PHOTON_CUT 4       // still active after the step limit (a trapped path)
 #define EK_PHOTON_RECEIVED 5  // stopped on a receiver (receivers.h); position is the hit point
 
 // How a light's photons are laid out (photonGrid): N×N grids of cells, one photon per cell.

@@ -22,7 +22,9 @@ vec3 worldToVolumeIndex(vec3 world) {
 // GLSL only: the texture unit filters (volume_bindings.glsl). On llvmpipe its weights are float
 // and the result matches the CPU twin to ~1e-6; on hardware GPUs they are fixed point (8
 // fractional bits), so the exact path below is their default (render/frame_renderer.cpp).
-vec4 sampleVolume(int slot, vec3 indexPos) { return filterVolume(slot, indexPos); }
+vec4 sampleVolume(int slot, vec3 indexPos) {
+    return filterVolume(slot, indexPos);
+}
 #else
 vec4 sampleVolume(int slot, vec3 indexPos) {
     const ivec3 last = volumeResolution() - ivec3(1);
@@ -47,10 +49,14 @@ vec4 sampleVolume(int slot, vec3 indexPos) {
 }
 #endif
 
-float sampleField(int slot, vec3 indexPos) { return sampleVolume(slot, indexPos).x; }
+float sampleField(int slot, vec3 indexPos) {
+    return sampleVolume(slot, indexPos).x;
+}
 
 // Volume-index position and world position of the centre of voxel v.
-vec3 voxelCenterIndex(ivec3 v) { return vec3(v) + vec3(0.5f); }
+vec3 voxelCenterIndex(ivec3 v) {
+    return vec3(v) + vec3(0.5f);
+}
 vec3 voxelCenterWorld(ivec3 v) {
     return vec3(params.volumeMin) + voxelCenterIndex(v) * volumeVoxelSize();
 }

@@ -2,8 +2,8 @@
 // reaches the medium through the smoothed photon volumes (params.pipeline.z; light bent and
 // focused by refraction) or straight, with its transmittance (shadowing) taken from the light
 // volume (light_volume.h) or, as reference, marched toward the light from every sample (like
-// vdb_render). Rays that leave the volume see environmentRadiance (environment.h); rays that reach a
-// receiver (receivers.h) stop there and see its diffuse reflection. Needs optics.h, receivers.h,
+// vdb_render). Rays that leave the volume see environmentRadiance (environment.h); rays that reach
+// a receiver (receivers.h) stop there and see its diffuse reflection. Needs optics.h, receivers.h,
 // environment.h and, from the includer, `vec4 fetchReceiverTexel(int index)`: the irradiance
 // (rgb) of a texel of the receiver map.
 
@@ -212,8 +212,7 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
         const int receiver = receiverCrossing(origin + dir * t0, origin + dir * tEnd, tHit, front);
         const float t1 = receiver >= 0 ? t0 + (tEnd - t0) * tHit : tEnd;
         const vec3 x = origin + dir * (0.5f * (t0 + t1));
-        if (!accumulateStep(x, worldToVolumeIndex(x), dir, t1 - t0, radiance, transmittance))
-            break;
+        if (!accumulateStep(x, worldToVolumeIndex(x), dir, t1 - t0, radiance, transmittance)) break;
         if (receiver >= 0) {  // opaque: nothing behind it shows
             const vec3 hit =
                 receiverHitPoint(receiver, origin + dir * t0, origin + dir * tEnd, tHit);
@@ -228,8 +227,8 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
 // The unit direction of the viewing ray through pixel (px, py)'s centre, row 0 at the top
 // (core/camera.h projectToImage is its inverse).
 vec3 pixelRayDirection(int px, int py) {
-    const float u = ((float(px) + 0.5f) / float(params.image.x) * 2.0f - 1.0f) *
-                    params.cameraOrigin.w;
+    const float u =
+        ((float(px) + 0.5f) / float(params.image.x) * 2.0f - 1.0f) * params.cameraOrigin.w;
     const float v = (1.0f - (float(py) + 0.5f) / float(params.image.y) * 2.0f) *
                     params.cameraOrigin.w / params.cameraRight.w;
     return normalize(vec3(params.cameraForward) + u * vec3(params.cameraRight) +

@@ -160,7 +160,8 @@ TEST_CASE("the shipped scenes hold what they say", "[scene]") {
 }
 
 TEST_CASE("a simulation source needs the scene's simulation", "[scene]") {
-    const std::string materials = R"("materials": [{"name": "smoke", "field": "density", "scattering": [1, 1, 1]},
+    const std::string materials =
+        R"("materials": [{"name": "smoke", "field": "density", "scattering": [1, 1, 1]},
         {"name": "air", "field": "temperature", "gladstone_dale": 0.01}])";
     CHECK_THROWS_WITH(
         eikon::parseScene(R"({"sources": [{"type": "simulation"}], )" + materials + "}", "s.json"),
@@ -171,9 +172,10 @@ TEST_CASE("a simulation source needs the scene's simulation", "[scene]") {
         "s.json");
     CHECK(scene.sources[0].type == eikon::SourceType::Simulation);
     CHECK_THROWS_WITH(
-        eikon::parseScene(R"({"sources": [{"type": "simulation", "file": "a.vdb"}], )" + materials +
-                              R"(, "simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 8}})",
-                          "s.json"),
+        eikon::parseScene(
+            R"({"sources": [{"type": "simulation", "file": "a.vdb"}], )" + materials +
+                R"(, "simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 8}})",
+            "s.json"),
         Catch::Contains("s.json:/sources/0/file") && Catch::Contains("unknown key"));
 }
 

@@ -104,24 +104,28 @@ TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]
         CHECK_THROWS_WITH(parseMeshes(meshes, extra),
                           Catch::Contains("m.json:" + where) && Catch::Contains(what));
     };
-    fails(R"([{"name": "x", "file": "a.obj", "shape": {"type": "box", "min": [0,0,0], "max": [1,1,1]}, "ior": 1.5}])",
-          "/meshes/0/shape", "either \"file\" or \"shape\"");
+    fails(
+        R"([{"name": "x", "file": "a.obj", "shape": {"type": "box", "min": [0,0,0], "max": [1,1,1]}, "ior": 1.5}])",
+        "/meshes/0/shape", "either \"file\" or \"shape\"");
     fails(R"([{"name": "x", "ior": 1.5}])", "/meshes/0/file", "needs \"file\" or \"shape\"");
     fails(R"([{"name": "x", "file": "a.obj"}])", "/meshes/0", "a mesh needs optics");
     fails(R"([{"name": "x", "file": "a.obj", "ior": 0.9}])", "/meshes/0/ior", ">= 1");
-    fails(R"([{"name": "x", "file": "a.obj", "ior": 1.5}, {"name": "x", "file": "b.obj", "ior": 1.5}])",
-          "/meshes/1/name", "duplicate mesh name");
+    fails(
+        R"([{"name": "x", "file": "a.obj", "ior": 1.5}, {"name": "x", "file": "b.obj", "ior": 1.5}])",
+        "/meshes/1/name", "duplicate mesh name");
     fails(R"([{"name": "a b", "file": "a.obj", "ior": 1.5}])", "/meshes/0/name", "letters");
-    fails(R"([{"name": "x", "shape": {"type": "box", "min": [0,0,0], "max": [1,0,1]}, "ior": 1.5}])",
-          "/meshes/0/shape/max", "max > min");
+    fails(
+        R"([{"name": "x", "shape": {"type": "box", "min": [0,0,0], "max": [1,0,1]}, "ior": 1.5}])",
+        "/meshes/0/shape/max", "max > min");
     fails(R"([{"name": "x", "shape": {"type": "cone"}, "ior": 1.5}])", "/meshes/0/shape/type",
           "icosphere");
-    fails(R"([{"name": "x", "shape": {"type": "icosphere", "radius": 1}, "close_holes": 3, "ior": 1.5}])",
-          "/meshes/0/close_holes", "from a file");
+    fails(
+        R"([{"name": "x", "shape": {"type": "icosphere", "radius": 1}, "close_holes": 3, "ior": 1.5}])",
+        "/meshes/0/close_holes", "from a file");
     fails(R"([{"name": "x", "file": "a.obj", "rotation": [0, 0, 0.5, 0.5], "ior": 1.5}])",
           "/meshes/0/rotation", "unit quaternion");
-    fails(R"([{"name": "x", "file": "a.obj", "ior": 1.5, "scale": [1, 0, 1]}])", "/meshes/0/scale/1",
-          "> 0");
+    fails(R"([{"name": "x", "file": "a.obj", "ior": 1.5, "scale": [1, 0, 1]}])",
+          "/meshes/0/scale/1", "> 0");
     fails(R"([{"name": "x", "file": "a.obj", "ior": 1.5, "blur": {"radius": 2}}])",
           "/meshes/0/blur/radius", "unknown key");
     fails(R"([{"name": "x", "file": "a.obj", "ior": 1.5, "transalte": [0, 0, 0]}])",
@@ -150,35 +154,48 @@ TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]
     fails(R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4,
               "deformer": {"type": "jelly", "pokes": [{"time": 1, "position": [0, 0, 0]}]}}])",
           "/meshes/0/deformer/pokes/0", "velocity");
-    fails(R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4,
+    fails(
+        R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4,
               "deformer": {"type": "jelly"}}])",
-          "/animation/0/target", "moves by its own simulation",
-          R"(, "animation": [{"target": "/meshes/0/translate", "times": [0], "values": [[0, 0, 0]]}])");
+        "/animation/0/target", "moves by its own simulation",
+        R"(, "animation": [{"target": "/meshes/0/translate", "times": [0], "values": [[0, 0, 0]]}])");
     const std::string glass = R"({"name": "glass", "file": "g.obj", "ior": 1.5})";
-    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "cup", "fill": 0.5}, "ior": 1.33}])",
-          "/meshes/1/shape/container", "no earlier mesh is named \"cup\"");
-    fails(R"([{"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5}, "ior": 1.33}, )" +
-              glass + "]",
-          "/meshes/0/shape/container", "must come before it");
-    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 1.2}, "ior": 1.33}])",
-          "/meshes/1/shape/fill", "(0, 1]");
-    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass"}, "ior": 1.33}])",
+    fails(
+        "[" + glass +
+            R"(, {"name": "w", "shape": {"type": "liquid", "container": "cup", "fill": 0.5}, "ior": 1.33}])",
+        "/meshes/1/shape/container", "no earlier mesh is named \"cup\"");
+    fails(
+        R"([{"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5}, "ior": 1.33}, )" +
+            glass + "]",
+        "/meshes/0/shape/container", "must come before it");
+    fails(
+        "[" + glass +
+            R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 1.2}, "ior": 1.33}])",
+        "/meshes/1/shape/fill", "(0, 1]");
+    fails("[" + glass +
+              R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass"}, "ior": 1.33}])",
           "/meshes/1/shape/fill", "missing required key");
-    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5},
+    fails("[" + glass +
+              R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5},
               "translate": [0, 1, 0], "ior": 1.33}])",
           "/meshes/1/translate", "container's placement");
     fails(R"([{"name": "p", "shape": {"type": "water", "size": [2, 2], "depth": 0.3}, "ior": 1.33},
               {"name": "w", "shape": {"type": "liquid", "container": "p", "fill": 0.5}, "ior": 1.33}])",
           "/meshes/1/shape/container", "not a container");
-    fails(R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4, "deformer": {"type": "jelly"}},
+    fails(
+        R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4, "deformer": {"type": "jelly"}},
               {"name": "w", "shape": {"type": "liquid", "container": "j", "fill": 0.5}, "ior": 1.33}])",
-          "/meshes/1/shape/container", "deforming container");
-    fails("[" + glass + R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5}, "ior": 1.33}])",
-          "/animation/0/target", "moves with its container 'glass'",
-          R"(, "animation": [{"target": "/meshes/1/translate", "times": [0], "values": [[0, 0, 0]]}])");
-    const std::string handles = R"("handles": [{"name": "base", "box": {"min": [-1, -1, -1], "max": [1, -0.5, 1]}},
+        "/meshes/1/shape/container", "deforming container");
+    fails(
+        "[" + glass +
+            R"(, {"name": "w", "shape": {"type": "liquid", "container": "glass", "fill": 0.5}, "ior": 1.33}])",
+        "/animation/0/target", "moves with its container 'glass'",
+        R"(, "animation": [{"target": "/meshes/1/translate", "times": [0], "values": [[0, 0, 0]]}])");
+    const std::string handles =
+        R"("handles": [{"name": "base", "box": {"min": [-1, -1, -1], "max": [1, -0.5, 1]}},
                                   {"name": "top", "sphere": {"center": [0, 1, 0], "radius": 0.3}}])";
-    const std::string arap = R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4,
+    const std::string arap =
+        R"([{"name": "j", "shape": {"type": "icosphere", "radius": 1}, "ior": 1.4,
               "deformer": {"type": "arap", )";
     fails(arap + R"("handles": []}}])", "/meshes/0/deformer/handles", "at least one handle");
     fails(arap + R"("handles": [{"name": "h"}]}}])", "/meshes/0/deformer/handles/0/sphere",
@@ -192,13 +209,16 @@ TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]
               {"name": "h", "sphere": {"center": [0, 1, 0], "radius": 1}}]}}])",
           "/meshes/0/deformer/handles/1/name", "duplicate handle name");
     fails(arap + R"("iterations": 0, )" + handles + "}}]", "/meshes/0/deformer/iterations", "1");
-    fails(arap + handles + "}}]", "/animation/0/target", "has no handle 2",
-          R"(, "animation": [{"target": "/meshes/0/deformer/handles/2/translate", "times": [0], "values": [[0, 0, 0]]}])");
-    fails(arap + handles + "}}]", "/animation/0/target", "translate or rotation, not 'scale'",
-          R"(, "animation": [{"target": "/meshes/0/deformer/handles/1/scale", "times": [0], "values": [[1, 1, 1]]}])");
-    fails(R"([{"name": "g", "file": "g.obj", "ior": 1.5}])", "/animation/0/target",
-          "has no ARAP deformer",
-          R"(, "animation": [{"target": "/meshes/0/deformer/handles/0/translate", "times": [0], "values": [[0, 0, 0]]}])");
+    fails(
+        arap + handles + "}}]", "/animation/0/target", "has no handle 2",
+        R"(, "animation": [{"target": "/meshes/0/deformer/handles/2/translate", "times": [0], "values": [[0, 0, 0]]}])");
+    fails(
+        arap + handles + "}}]", "/animation/0/target", "translate or rotation, not 'scale'",
+        R"(, "animation": [{"target": "/meshes/0/deformer/handles/1/scale", "times": [0], "values": [[1, 1, 1]]}])");
+    fails(
+        R"([{"name": "g", "file": "g.obj", "ior": 1.5}])", "/animation/0/target",
+        "has no ARAP deformer",
+        R"(, "animation": [{"target": "/meshes/0/deformer/handles/0/translate", "times": [0], "values": [[0, 0, 0]]}])");
     fails(arap + handles + "}}]", "/simulation/obstacles/0/mesh", "dragged by ARAP handles",
           R"(, "simulation": {"domain": {"min": [-2, -2, -2], "max": [2, 2, 2]}, "resolution": 8,
               "obstacles": [{"mesh": "j"}]})");
@@ -222,7 +242,8 @@ TEST_CASE("mesh errors name the key and say what was expected", "[scene][meshes]
         CHECK(s.meshes[0].arap->handles[1].rotation == glm::quat(0.0f, 0.0f, 0.0f, 1.0f));
     }
     // Without meshes, sources and materials stay required.
-    CHECK_THROWS_WITH(parseScene("{}", "m.json"), Catch::Contains("missing required key 'sources'"));
+    CHECK_THROWS_WITH(parseScene("{}", "m.json"),
+                      Catch::Contains("missing required key 'sources'"));
 }
 
 TEST_CASE("a smoke obstacle names a mesh that stands still, or the error says why",
@@ -267,12 +288,11 @@ TEST_CASE("a smoke obstacle names a mesh that stands still, or the error says wh
           "/simulation/obstacles/1/mesh",
           "mesh 'glass' is moved by /animation/1 (/meshes/0/translate); a smoke obstacle must "
           "stand still");
-    CHECK_THROWS_WITH(
-        parseScene(R"({"sources": [{"type": "sphere", "field": "density"}],
+    CHECK_THROWS_WITH(parseScene(R"({"sources": [{"type": "sphere", "field": "density"}],
             "materials": [{"name": "smoke", "scattering": [1, 1, 1]}],
             "simulation": {"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 8,
             "obstacles": [{"mesh": "glass"}]}})",
-                   "n.json"),
-        Catch::Contains("n.json:/simulation/obstacles/0/mesh") &&
-            Catch::Contains("the scene has none"));
+                                 "n.json"),
+                      Catch::Contains("n.json:/simulation/obstacles/0/mesh") &&
+                          Catch::Contains("the scene has none"));
 }

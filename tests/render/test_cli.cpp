@@ -208,8 +208,8 @@ TEST_CASE("eikon render plays a scene's keyframes on the scene's clock", "[cli][
     CHECK(!first.empty());
     CHECK(first != second);  // the ball moved
     // Frame 1 alone, in a fresh process, is the same frame: state depends on the time only.
-    const RunResult again = runEikon(
-        "render " + quoted(scene) + " -o " + quoted(dir + "/b") + " --frames 1-1", dir);
+    const RunResult again =
+        runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/b") + " --frames 1-1", dir);
     REQUIRE(again.exitCode == 0);
     CHECK(readFile(dir + "/b/moving_0001.png") == second);
 }
@@ -270,7 +270,8 @@ TEST_CASE("eikon render reads mesh files: closed ones render, open ones fail unt
     auto sceneWith = [&](const std::string& mesh, const std::string& extra) {
         const std::string path = dir + "/scene.json";
         writeFile(path, R"({
-  "meshes": [{"name": "bunny", "file": ")" + sharedData("meshes/" + mesh) +
+  "meshes": [{"name": "bunny", "file": ")" +
+                            sharedData("meshes/" + mesh) +
                             R"(", "ior": 1.5, "absorption": [1, 2, 3], "scale": 10)" + extra +
                             R"(}],
   "volume": {"resolution": 24},
@@ -285,15 +286,16 @@ TEST_CASE("eikon render reads mesh files: closed ones render, open ones fail unt
     INFO("stdout:\n" << closed.out << "stderr:\n" << closed.err);
     CHECK(closed.exitCode == 0);
     CHECK(fs::exists(dir + "/a/bunny_0000.png"));
-    const RunResult open =
-        runEikon("render " + sceneWith("stanford-bunny.obj", "") + " -o " + quoted(dir + "/b"), dir);
-    checkOneLineError(open, fs::path(sharedData("meshes/stanford-bunny.obj")).lexically_normal().string());
+    const RunResult open = runEikon(
+        "render " + sceneWith("stanford-bunny.obj", "") + " -o " + quoted(dir + "/b"), dir);
+    checkOneLineError(
+        open, fs::path(sharedData("meshes/stanford-bunny.obj")).lexically_normal().string());
     CHECK(contains(open.err, "not watertight"));
     CHECK_FALSE(fs::exists(dir + "/b/bunny_0000.png"));
-    const RunResult filled = runEikon(
-        "render " + sceneWith("stanford-bunny.obj", R"(, "close_holes": 80)") + " -o " +
-            quoted(dir + "/c"),
-        dir);
+    const RunResult filled =
+        runEikon("render " + sceneWith("stanford-bunny.obj", R"(, "close_holes": 80)") + " -o " +
+                     quoted(dir + "/c"),
+                 dir);
     INFO("stdout:\n" << filled.out << "stderr:\n" << filled.err);
     CHECK(filled.exitCode == 0);
 }
@@ -304,7 +306,8 @@ TEST_CASE("eikon render fills the shared wine glass with a liquid that rises wit
     auto sceneWith = [&](const std::string& container, const std::string& fill) {
         const std::string path = dir + "/wine_" + fill + ".json";
         writeFile(path, R"({
-  "meshes": [)" + container + R"(,
+  "meshes": [)" + container +
+                            R"(,
              {"name": "wine", "shape": {"type": "liquid", "container": "glass", "fill": )" +
                             fill + R"(}, "emission": [1, 0.3, 0.2], "absorption": [0.5, 0.5, 0.5]}],
   "volume": {"resolution": 32},
@@ -314,9 +317,9 @@ TEST_CASE("eikon render fills the shared wine glass with a liquid that rises wit
 })");
         return quoted(path);
     };
-    const std::string glass = R"({"name": "glass", "file": ")" +
-                              sharedData("meshes/wine_glass.obj") +
-                              R"(", "scale": 0.5, "translate": [0, -0.2, 0], "absorption": [0.2, 0.2, 0.2]})";
+    const std::string glass =
+        R"({"name": "glass", "file": ")" + sharedData("meshes/wine_glass.obj") +
+        R"(", "scale": 0.5, "translate": [0, -0.2, 0], "absorption": [0.2, 0.2, 0.2]})";
     // The liquid glows: its light in the image grows with how much of the bowl it fills.
     auto glow = [&](const std::string& fill) {
         const RunResult r = runEikon("render " + sceneWith(glass, fill) + " -o " +
@@ -336,8 +339,9 @@ TEST_CASE("eikon render fills the shared wine glass with a liquid that rises wit
     // A container without a cavity: one line naming the liquid's place in the scene.
     const RunResult ball = runEikon(
         "render " +
-            sceneWith(R"({"name": "glass", "shape": {"type": "icosphere", "radius": 0.5}, "ior": 1.5})",
-                      "0.5") +
+            sceneWith(
+                R"({"name": "glass", "shape": {"type": "icosphere", "radius": 0.5}, "ior": 1.5})",
+                "0.5") +
             " -o " + quoted(dir + "/ball"),
         dir);
     checkOneLineError(ball, dir + "/wine_0.5.json:/meshes/1: ");
@@ -376,7 +380,8 @@ TEST_CASE("a live simulation source renders the frame eikon simulate caches", "[
     auto sceneWith = [&](const std::string& source) {
         return R"({
   "volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 16},
-  "sources": [)" + source + R"(],
+  "sources": [)" +
+               source + R"(],
   "materials": [{"name": "smoke", "field": "density", "scattering": [6, 6, 6], "absorption": [1, 1, 1]}],
   "lights": [{"type": "directional", "direction": [-0.3, -1, -0.2]}],
   "camera": {"position": [0.5, 0.5, 3], "look_at": [0.5, 0.5, 0.5]},
@@ -392,7 +397,8 @@ TEST_CASE("a live simulation source renders the frame eikon simulate caches", "[
     writeFile(live, sceneWith(R"({"type": "simulation"})"));
     writeFile(cached, sceneWith(R"({"type": "vdb_sequence", "file": ")" + dir +
                                 R"(/cache/puff_####.vdb"})"));
-    const RunResult sim = runEikon("simulate " + quoted(live) + " -o " + quoted(dir + "/cache"), dir);
+    const RunResult sim =
+        runEikon("simulate " + quoted(live) + " -o " + quoted(dir + "/cache"), dir);
     INFO("stdout:\n" << sim.out << "stderr:\n" << sim.err);
     REQUIRE(sim.exitCode == 0);
     const RunResult fromCache =

@@ -51,7 +51,8 @@ TEST_CASE("a later mesh displaces an earlier one where they overlap", "[meshes]"
             {"name": "first", "shape": {"type": "box", "min": [-0.5, -0.5, -0.5], "max": [0.25, 0.5, 0.5]}, "ior": 1.5},
             {"name": "second", "shape": {"type": "box", "min": [-0.25, -0.5, -0.5], "max": [0.5, 0.5, 0.5]}, "ior": 1.33, "absorption": [1, 1, 1]}],
         "volume": {"bounds": {"min": [-1.5, -1.5, -1.5], "max": [1.5, 1.5, 1.5]}, "resolution": 24}
-    })", "overlap.json");
+    })",
+                                   "overlap.json");
     REQUIRE(scene.materials.size() == 3);  // first.n, second, second.n
     CHECK(scene.materials[0].field == "mesh:first:n");
     CHECK(scene.materials[1].field == "mesh:second");
@@ -108,7 +109,8 @@ TEST_CASE("meshes are voxelized again only when they move", "[meshes]") {
 TEST_CASE("a mesh from a file that nobody loaded is an error naming it", "[meshes]") {
     const Scene scene = parseScene(R"({
         "meshes": [{"name": "glass", "file": "glass.obj", "ior": 1.5}]
-    })", "/scenes/wine.json");
+    })",
+                                   "/scenes/wine.json");
     FrameRenderer renderer(scene, Backend::Cpu);
     CHECK_THROWS_WITH(renderer.render(0), Catch::Contains("/scenes/wine.json:/meshes/0/file") &&
                                               Catch::Contains("mesh 'glass'") &&
@@ -144,7 +146,8 @@ TEST_CASE("a water mesh frames the volume on its room and waits to be stepped", 
                                  {"time": 0.7, "position": [-0.2, 0.1], "depth": -0.02}]},
                     "ior": 1.33}],
         "volume": {"resolution": 16}
-    })", "/s/pool.json");
+    })",
+                                   "/s/pool.json");
     MeshFields meshes(scene);
     const std::vector<Bounds3> bounds = meshes.worldBounds(scene);
     CHECK(bounds[0].min == glm::vec3(-1.0f, 0.0f, -0.5f));
@@ -161,10 +164,11 @@ TEST_CASE("a liquid is placed by its container and waits to be made", "[meshes]"
                    {"name": "tea", "shape": {"type": "liquid", "container": "cup", "fill": 0.5},
                     "absorption": [1, 1, 1]}],
         "volume": {"resolution": 16}
-    })", "/s/tea.json");
+    })",
+                             "/s/tea.json");
     MeshFields meshes(scene);
-    CHECK_THROWS_WITH(meshes.worldBounds(scene),
-                      Catch::Contains("/s/tea.json:/meshes/1/shape") && Catch::Contains("never made"));
+    CHECK_THROWS_WITH(meshes.worldBounds(scene), Catch::Contains("/s/tea.json:/meshes/1/shape") &&
+                                                     Catch::Contains("never made"));
     // The liquid's object-space mesh (what sim/container_fill.h makes) goes where the cup goes.
     meshes.setMesh(scene, 1, boxMesh(glm::vec3(-0.5f, 0.2f, -0.5f), glm::vec3(0.5f, 1.0f, 0.5f)));
     Bounds3 tea = meshes.worldBounds(scene)[1];

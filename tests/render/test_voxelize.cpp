@@ -128,8 +128,8 @@ TEST_CASE("the normal from the blurred coverage's gradient is the sphere's withi
           "[voxelize]") {
     const RenderVolume volume = unitVolume(64);
     const glm::vec3 centre(0.5f);
-    const auto blurred = blurCoverageCpu(
-        voxelizeCoverageCpu(icosphere(centre, 0.3f, 5), volume), volume.resolution, {});
+    const auto blurred = blurCoverageCpu(voxelizeCoverageCpu(icosphere(centre, 0.3f, 5), volume),
+                                         volume.resolution, {});
     const glm::ivec3 res = volume.resolution;
     auto at = [&](int x, int y, int z) {
         return blurred[(size_t(z) * size_t(res.y) + size_t(y)) * size_t(res.x) + size_t(x)];
@@ -161,7 +161,8 @@ TEST_CASE("moving a mesh by whole voxels moves its coverage by as many voxels", 
     const float fine = 1.0f / 64.0f;
     const TriangleMesh mesh = octahedron(glm::vec3(20.5f, 24.5f, 22.0f) * fine, 9.25f * fine);
     const auto a = voxelizeCoverageCpu(mesh, volume);
-    const auto b = voxelizeCoverageCpu(translated(mesh, glm::vec3(2.0f, 0.0f, 3.0f) / 16.0f), volume);
+    const auto b =
+        voxelizeCoverageCpu(translated(mesh, glm::vec3(2.0f, 0.0f, 3.0f) / 16.0f), volume);
     int compared = 0, differing = 0;
     for (int z = 0; z + 3 < 16; ++z)
         for (int y = 0; y < 16; ++y)
@@ -182,8 +183,8 @@ TEST_CASE("the blur keeps a constant, spreads an impulse by the Gaussian, and ke
     const size_t count = size_t(res.x * res.y * res.z);
     for (float v : blurCoverageCpu(std::vector<float>(count, 0.7f), res, {}))
         CHECK(v == Approx(0.7f).epsilon(1e-6));
-    // Mass is kept where no voxel the impulse reaches is within a radius of a face (those renormalize
-    // their weights): 19³ with the impulse in the middle.
+    // Mass is kept where no voxel the impulse reaches is within a radius of a face (those
+    // renormalize their weights): 19³ with the impulse in the middle.
     const glm::ivec3 big(19);
     std::vector<float> impulse(size_t(19 * 19 * 19), 0.0f);
     const size_t centre = (size_t(9) * 19 + 9) * 19 + 9;
@@ -192,8 +193,8 @@ TEST_CASE("the blur keeps a constant, spreads an impulse by the Gaussian, and ke
     double norm = 0.0;
     for (int d = -4; d <= 4; ++d) norm += std::exp(-d * d / (2.0 * 1.5 * 1.5));
     CHECK(blurred[centre] == Approx(std::pow(1.0 / norm, 3.0)).epsilon(1e-5));
-    CHECK(blurred[centre + 1] == Approx(std::pow(1.0 / norm, 3.0) * std::exp(-1.0 / 4.5))
-                                     .epsilon(1e-5));
+    CHECK(blurred[centre + 1] ==
+          Approx(std::pow(1.0 / norm, 3.0) * std::exp(-1.0 / 4.5)).epsilon(1e-5));
     double total = 0.0;
     for (float v : blurred) total += double(v);
     CHECK(total == Approx(1.0).epsilon(1e-5));

@@ -11,9 +11,9 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "core/error.h"
+#include "core/mesh_primitives.h"
 #include "sim/arap_deformer.h"
 #include "sim/mesh_check.h"
-#include "core/mesh_primitives.h"
 
 using eikon::ArapDeformer;
 using eikon::TriangleMesh;

@@ -19,7 +19,7 @@ using sim::Poke;
 
 TEST_CASE("without damping or floor a poked jelly's energy oscillates and does not drift",
           "[jelly]") {
-    JellySettings s;  // no floor
+    JellySettings s;                            // no floor
     s.gravity = glm::vec3(0.0f, -9.81f, 0.0f);  // conservative too: free fall keeps the total
     s.pokes = {Poke{0.0, glm::vec3(0.3f, 1.0f, 0.0f), 0.25f, glm::vec3(-1.5f, 0.5f, 0.0f)}};
     Jelly jelly(icosphere(glm::vec3(0.0f, 1.0f, 0.0f), 0.3f, 2), s);
@@ -52,9 +52,9 @@ TEST_CASE("a dropped jelly comes to rest on the floor, keeping its volume", "[je
     INFO("lowest vertex " << lowest << ", centre " << centre.y << ", kinetic "
                           << jelly.kineticEnergy() << ", volume " << jelly.volume() << " of "
                           << jelly.restVolume());
-    CHECK(lowest >= 0.0f);            // never below the floor
-    CHECK(centre.y > 0.2f);           // resting on the floor, not through it
-    CHECK(centre.y < 0.32f);          // and down, not floating
+    CHECK(lowest >= 0.0f);    // never below the floor
+    CHECK(centre.y > 0.2f);   // resting on the floor, not through it
+    CHECK(centre.y < 0.32f);  // and down, not floating
     // At rest: kinetic energy far below the m·g·h = 1 · 9.81 · 0.7 ≈ 6.9 J the fall released.
     CHECK(jelly.kineticEnergy() < 1e-3);
     CHECK(std::abs(jelly.volume() / jelly.restVolume() - 1.0) < 0.05);

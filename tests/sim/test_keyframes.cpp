@@ -56,7 +56,8 @@ const char* const kScene = R"({
 
 TEST_CASE("keys are exact, and the value holds before the first and after the last",
           "[animation]") {
-    for (Interpolation i : {Interpolation::Step, Interpolation::Linear, Interpolation::CatmullRom}) {
+    for (Interpolation i :
+         {Interpolation::Step, Interpolation::Linear, Interpolation::CatmullRom}) {
         const AnimationTrack t = scalarTrack(i, {0.5, 1.0, 2.5}, {3.0f, -1.0f, 7.0f});
         CHECK(at(t, 0.5) == 3.0f);
         CHECK(at(t, 1.0) == -1.0f);
@@ -82,7 +83,8 @@ TEST_CASE("cubicspline uses glTF's tangents scaled by the key span", "[animation
     // v0 = 0, out-tangent 1; v1 = 1, in-tangent −1; span 2. At u = ½:
     // ½·0 + ⅛·2·1 + ½·1 − ⅛·2·(−1) = 0.25 + 0.5 + 0.25 = 1.
     AnimationTrack t = scalarTrack(Interpolation::CubicSpline, {1, 3}, {});
-    t.values = {/*in*/ 0.0f, /*v*/ 0.0f, /*out*/ 1.0f, /*in*/ -1.0f, /*v*/ 1.0f, /*out*/ 0.0f};
+    t.values = {/*in*/ 0.0f,  /*v*/ 0.0f, /*out*/ 1.0f,
+                /*in*/ -1.0f, /*v*/ 1.0f, /*out*/ 0.0f};
     CHECK(at(t, 2.0) == Approx(1.0f));
     CHECK(at(t, 1.0) == 0.0f);
     CHECK(at(t, 3.0) == 1.0f);
@@ -110,8 +112,7 @@ TEST_CASE("rotations slerp along the shorter arc and stay unit quaternions", "[a
     }
 }
 
-TEST_CASE("a scene animates lights, meshes, materials and camera from one clock",
-          "[animation]") {
+TEST_CASE("a scene animates lights, meshes, materials and camera from one clock", "[animation]") {
     const Scene base = parseScene(kScene, "anim.json");
     REQUIRE(base.animation.size() == 5);
     const sim::SceneAnimation animation(base);
@@ -121,7 +122,7 @@ TEST_CASE("a scene animates lights, meshes, materials and camera from one clock"
     CHECK(a.lights[0].position == glm::vec3(0, 2, 2));
     CHECK(a.lights[0].intensity == 1.0f);
     animation.apply(clock.timeOfFrame(48), a);
-    CHECK(a.lights[0].intensity == 5.0f);  // step at 2 s
+    CHECK(a.lights[0].intensity == 5.0f);       // step at 2 s
     animation.apply(clock.timeOfFrame(96), a);  // the last key
     CHECK(a.meshes[0].rotation.y == Approx(0.7071068f));
     CHECK(a.materials[0].ior == Approx(1.7f));
@@ -135,8 +136,7 @@ TEST_CASE("a scene animates lights, meshes, materials and camera from one clock"
     CHECK(a.materials[0].ior == b.materials[0].ior);
     CHECK(a.camera.horizontalFovDeg == b.camera.horizontalFovDeg);
     CHECK(glm::length(glm::vec4(a.meshes[0].rotation.x, a.meshes[0].rotation.y,
-                                a.meshes[0].rotation.z, a.meshes[0].rotation.w)) ==
-          Approx(1.0f));
+                                a.meshes[0].rotation.z, a.meshes[0].rotation.w)) == Approx(1.0f));
 }
 
 TEST_CASE("animation errors name the track and say what was expected", "[animation]") {
@@ -172,8 +172,9 @@ TEST_CASE("animation errors name the track and say what was expected", "[animati
     fails(R"({"target": "/lights/0/intensity", "interpolation": "cubicspline", "times": [0],
               "values": [1]})",
           "/animation/0", "in_tangents");
-    fails(R"({"target": "/lights/0/intensity", "interpolation": "bezier", "times": [0], "values": [1]})",
-          "/animation/0/interpolation", "catmull_rom");
+    fails(
+        R"({"target": "/lights/0/intensity", "interpolation": "bezier", "times": [0], "values": [1]})",
+        "/animation/0/interpolation", "catmull_rom");
     fails(R"({"target": "/lights/0/intensity", "times": [0], "values": [1]},
              {"target": "/lights/0/intensity", "times": [1], "values": [2]})",
           "/animation/1/target", "animated already by /animation/0");
@@ -237,13 +238,12 @@ TEST_CASE("smoke source tracks move and change the simulation's sources", "[anim
           "/animation/0/values/0", ">= 0");
     fails(R"({"target": "/simulation/sources/0/velocity", "times": [0], "values": [1]})",
           "/animation/0/values/0", "an array of 3 numbers");
-    CHECK_THROWS_WITH(
-        parseScene(R"({"lights": [{"type": "point", "position": [0, 2, 0]}],
+    CHECK_THROWS_WITH(parseScene(R"({"lights": [{"type": "point", "position": [0, 2, 0]}],
             "meshes": [{"name": "glass", "shape": {"type": "icosphere", "radius": 0.5},
                         "ior": 1.5}],
             "animation": [{"target": "/simulation/sources/0/center", "times": [0],
                            "values": [[0, 0, 0]]}]})",
-                   "n.json"),
-        Catch::Contains("n.json:/animation/0/target") &&
-            Catch::Contains("the scene has no \"simulation\" section"));
+                                 "n.json"),
+                      Catch::Contains("n.json:/animation/0/target") &&
+                          Catch::Contains("the scene has no \"simulation\" section"));
 }

@@ -64,7 +64,8 @@ TEST_CASE("droplets keep the water's volume, and damping calms the surface", "[w
     s.waveSpeed = 0.8f;
     s.damping = 0.5f;
     for (int d = 0; d < 8; ++d)
-        s.droplets.push_back({0.13 * d, {-1.2f + 0.3f * float(d), 0.5f - 0.1f * float(d)}, 0.04f, 0.03f});
+        s.droplets.push_back(
+            {0.13 * d, {-1.2f + 0.3f * float(d), 0.5f - 0.1f * float(d)}, 0.04f, 0.03f});
     WaterSurface water(s);
     const double area = 3.0 * 2.0;
     water.advanceToFrame(24);
@@ -82,8 +83,7 @@ TEST_CASE("droplets keep the water's volume, and damping calms the surface", "[w
     CHECK(late < 0.2f * early);
 }
 
-TEST_CASE("the body of water is a closed mesh wound outward, with the water's volume",
-          "[water]") {
+TEST_CASE("the body of water is a closed mesh wound outward, with the water's volume", "[water]") {
     WaterSettings s;
     s.cells = {24, 16};
     s.size = {1.5f, 1.0f};
@@ -107,7 +107,8 @@ TEST_CASE("the body of water is a closed mesh wound outward, with the water's vo
 TEST_CASE("frame f is the same however it is reached", "[water]") {
     WaterSettings s;
     s.cells = {40, 40};
-    s.droplets = {Droplet{0.2, {0.3f, 0.1f}, 0.06f, 0.02f}, Droplet{0.5, {-0.4f, -0.2f}, 0.05f, 0.03f}};
+    s.droplets = {Droplet{0.2, {0.3f, 0.1f}, 0.06f, 0.02f},
+                  Droplet{0.5, {-0.4f, -0.2f}, 0.05f, 0.03f}};
     WaterSurface direct(s), stepped(s);
     direct.advanceToFrame(30);
     for (int f : {7, 19, 30}) stepped.advanceToFrame(f);
