@@ -17,6 +17,7 @@
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 #include "render/gpu_timer.h"
+#include "render/light_transport_registry.h"
 
 namespace fs = std::filesystem;
 
@@ -41,10 +42,16 @@ void applyOptions(const RenderOptions& o, Scene& scene) {
     if (!o.frames.empty()) parseFrames(o.frames, scene.time);
     if (o.exr) scene.output.exr = true;
     if (o.step > 0.0f) scene.render.stepVoxels = o.step;
-    if (o.shadowStep > 0.0f) scene.render.shadowStepVoxels = o.shadowStep;
-    if (o.shadows == "volume") scene.render.shadows = ShadowMode::Volume;
-    if (o.shadows == "swept") scene.render.shadows = ShadowMode::Swept;
-    if (o.shadows == "marched") scene.render.shadows = ShadowMode::Marched;
+    // Settings of the light_volumes method (render.light_transport.light_volumes): they change
+    // nothing where the scene's method is another.
+    if (o.shadowStep > 0.0f) {
+        char step[32];
+        std::snprintf(step, sizeof(step), "%.9g", double(o.shadowStep));  // exact for a float
+        patchLightTransport(
+            scene, std::string("{\"light_volumes\": {\"shadow_step_voxels\": ") + step + "}}");
+    }
+    if (!o.shadows.empty())
+        patchLightTransport(scene, "{\"light_volumes\": {\"shadows\": \"" + o.shadows + "\"}}");
 }
 
 void printStats(const std::vector<StageTime>& stages, double writeMs, bool softwareGl) {
@@ -62,25 +69,26 @@ void printStats(const std::vector<StageTime>& stages, double writeMs, bool softw
             " read ~0, the cpu column is the cost)\n");
 }
 
-// Photons traced this frame, their steps and steps per second of the photon stage's wall time
-// (the larger of its GPU and CPU columns: hardware GPUs run the trace after the call returns, while
-// llvmpipe runs it inside the GL calls and its timer queries read about 0). Nothing when none
-// were traced.
-void printPhotonStats(const FrameRenderer& renderer, const std::vector<StageTime>& stats,
-                      int64_t stepsBefore) {
-    const int64_t steps = renderer.photonSteps() - stepsBefore;
+// The light-transport method's particles traced this frame (photons), their steps and steps per
+// second of the stage named after the method's particles (the larger of its GPU and CPU columns:
+// hardware GPUs run the trace after the call returns, while llvmpipe runs it inside the GL calls
+// and its timer queries read about 0). Nothing when none were traced.
+void printTransportStats(const FrameRenderer& renderer, const std::vector<StageTime>& stats,
+                         int64_t stepsBefore) {
+    const int64_t steps = renderer.transportSteps() - stepsBefore;
     if (steps == 0) return;
+    const std::string method = renderer.lightTransport().name();
     double ms = 0.0;
     for (const StageTime& s : stats)
-        if (s.name == "photons") ms += std::max(s.gpuMs, s.cpuMs);
-    const int64_t photons = renderer.lastPhotonsTraced();
+        if (s.name == method) ms += std::max(s.gpuMs, s.cpuMs);
+    const TransportStats last = renderer.lastTransportStats();
     std::printf(
-        "  photons: %lld traced, %lld steps (%.1f per photon), %.2f M steps/s; %lld cut, %d "
+        "  %s: %lld traced, %lld steps (%.1f per particle), %.2f M steps/s; %lld cut, %d "
         "rounds\n",
-        static_cast<long long>(photons), static_cast<long long>(steps),
-        photons > 0 ? double(steps) / double(photons) : 0.0,
-        ms > 0.0 ? double(steps) / (ms * 1e3) : 0.0,
-        static_cast<long long>(renderer.lastPhotonsCut()), renderer.lastPhotonRounds());
+        method.c_str(), static_cast<long long>(last.particlesTraced), static_cast<long long>(steps),
+        last.particlesTraced > 0 ? double(steps) / double(last.particlesTraced) : 0.0,
+        ms > 0.0 ? double(steps) / (ms * 1e3) : 0.0, static_cast<long long>(last.particlesCut),
+        last.rounds);
 }
 
 int runRender(const RenderOptions& o) {
@@ -98,7 +106,7 @@ int runRender(const RenderOptions& o) {
     std::printf("%s\n", choice.description.c_str());
     const bool softwareGl =
         renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());
-    int64_t photonSteps = 0;  // before this frame
+    int64_t transportSteps = 0;  // before this frame
     for (int frame = scene.time.frameStart; frame <= scene.time.frameEnd; ++frame) {
         driver.prepareFrame(renderer, frame);
         const Image image = renderer.render(frame);
@@ -124,9 +132,9 @@ int runRender(const RenderOptions& o) {
             std::printf("frame %d: %dx%d pixels, volume %dx%dx%d\n", frame, image.width,
                         image.height, v.resolution.x, v.resolution.y, v.resolution.z);
             printStats(stats, writeMs, softwareGl);
-            printPhotonStats(renderer, stats, photonSteps);
+            printTransportStats(renderer, stats, transportSteps);
         }
-        photonSteps = renderer.photonSteps();
+        transportSteps = renderer.transportSteps();
         std::fflush(stdout);
     }
     return 0;
@@ -146,7 +154,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                     "auto (GPU unless OpenGL is software or missing), gpu, or cpu (the CPU twin)")
         ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
     cmd->add_flag("--exr", o->exr, "also write linear HDR EXR");
-    cmd->add_option("--shadows", o->shadows, "light transmittance: volume, swept or marched")
+    cmd->add_option("--shadows", o->shadows,
+                    "light_volumes method's transmittance: volume, swept or marched")
         ->check(CLI::IsMember({"volume", "swept", "marched"}));
     cmd->add_option("--step", o->step, "view step in voxels (overrides the scene)")
         ->check(CLI::PositiveNumber);

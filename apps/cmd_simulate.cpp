@@ -14,6 +14,7 @@
 #include "core/field_registry.h"
 #include "core/scene.h"
 #include "core/vdb_export.h"
+#include "render/light_transport_registry.h"
 #include "sim/smoke_from_scene.h"
 #include "sim/smoke_publish.h"
 
@@ -30,6 +31,9 @@ struct SimulateOptions {
 
 int runSimulate(const SimulateOptions& o) {
     const Scene scene = loadScene(o.scene);
+    // The whole scene is checked before any work, the render settings the methods read too: a
+    // typo there fails now, not after the simulation when the cache is rendered.
+    checkLightTransport(scene);
     if (!scene.simulation) {
         throw Error(o.scene,
                     "no \"simulation\" section: nothing to simulate "

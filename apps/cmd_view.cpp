@@ -232,8 +232,10 @@ int runView(const ViewOptions& o) {
         window.swapBuffers();
         if (last) break;
     }
-    std::printf("frames rendered %d, uploads %d, resamples %d, light volume updates %d\n", rendered,
-                renderer.uploads(), renderer.resamples(), renderer.lightVolumeUpdates());
+    const std::string method = renderer.lightTransport().name();
+    std::printf("frames rendered %d, uploads %d, resamples %d, %s runs %d\n", rendered,
+                renderer.uploads(), renderer.resamples(), method.c_str(),
+                renderer.transportRuns(method));
     return 0;
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "render/light_transport_registry.h"
 
 namespace eikon::app {
 namespace {
@@ -34,6 +35,9 @@ Scene sceneFromInput(const std::string& input, const std::string& outputDir,
     } else {
         scene = loadScene(input);
     }
+    // The light-transport section is read by the methods, in render: checked here, before any
+    // work, like the rest of the scene.
+    checkLightTransport(scene);
     if (!outputDir.empty()) scene.output.directory = outputDir;
     if (!size.empty()) parseSize(size, scene.render);
     return scene;

@@ -7,7 +7,9 @@
 // rejects any other key with a "did you mean" hint: a misspelt optional key must not be silently
 // ignored, or the user would get a default instead of the value they wrote.
 //
-// Internal to core: users of the scene model include core/scene.h, not this header.
+// Users of the scene model include core/scene.h; this header is for code that reads a section of
+// a scene itself: the light-transport methods read their settings with it
+// (render/light_transport_registry.h).
 #include <cstddef>
 #include <cstdint>
 #include <optional>

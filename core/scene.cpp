@@ -509,42 +509,6 @@ EnvironmentSpec readEnvironment(const Value& value, const fs::path& sceneDirecto
     return environment;
 }
 
-// Photons per side beyond this would take minutes per light on a CPU and overflow int indices.
-constexpr std::int64_t kMaxPhotonsPerSide = 8192;
-// More steps per round than any step cap (16 crossings of an 8192-voxel box): one round.
-constexpr std::int64_t kMaxStepsPerRound = 1 << 20;
-
-PhotonRenderSettings readPhotons(const Value& value) {
-    Object object(value, "the photon settings");
-    PhotonRenderSettings photons;
-    if (auto mode = object.optional("mode")) {
-        const std::string m = mode->choice({"auto", "on", "off"});
-        photons.mode = m == "auto" ? PhotonMode::Auto
-                       : m == "on" ? PhotonMode::On
-                                   : PhotonMode::Off;
-    }
-    if (auto side = object.optional("per_side")) {
-        photons.perSide = static_cast<int>(side->integer(1, kMaxPhotonsPerSide));
-    }
-    if (auto step = object.optional("min_step_voxels")) {
-        photons.minStepVoxels = step->floatNumber(Range::greaterThan(0.0));
-    }
-    if (auto threshold = object.optional("flux_threshold")) {
-        photons.fluxThreshold = threshold->floatNumber(Range::closedOpen(0.0, 1.0));
-    }
-    if (auto fraction = object.optional("stop_fraction")) {
-        photons.stopFraction = fraction->floatNumber(Range::closedOpen(0.0, 1.0));
-    }
-    if (auto steps = object.optional("steps_per_round")) {
-        photons.stepsPerRound = static_cast<int>(steps->integer(1, kMaxStepsPerRound));
-    }
-    if (auto kappa = object.optional("kappa_tolerance")) {
-        photons.kappaTolerance = kappa->floatNumber(Range::atLeast(0.0));
-    }
-    object.finish();
-    return photons;
-}
-
 RenderSettings readRender(const Value& value) {
     Object object(value, "the render settings");
     RenderSettings render;
@@ -557,9 +521,6 @@ RenderSettings readRender(const Value& value) {
     if (auto step = object.optional("step_voxels")) {
         render.stepVoxels = step->floatNumber(Range::greaterThan(0.0));
     }
-    if (auto step = object.optional("shadow_step_voxels")) {
-        render.shadowStepVoxels = step->floatNumber(Range::greaterThan(0.0));
-    }
     if (auto cutoff = object.optional("min_transmittance")) {
         render.minTransmittance = cutoff->floatNumber(Range::closedOpen(0.0, 1.0));
     }
@@ -568,17 +529,27 @@ RenderSettings readRender(const Value& value) {
         render.toneCurve =
             curve->choice({"filmic", "linear"}) == "filmic" ? ToneCurve::Filmic : ToneCurve::Linear;
     }
-    if (auto shadows = object.optional("shadows")) {
-        const std::string mode = shadows->choice({"volume", "swept", "marched"});
-        render.shadows = mode == "volume"  ? ShadowMode::Volume
-                         : mode == "swept" ? ShadowMode::Swept
-                                           : ShadowMode::Marched;
-    }
     if (auto seed = object.optional("seed")) {
         render.seed =
             static_cast<std::uint32_t>(seed->integer(0, std::numeric_limits<std::uint32_t>::max()));
     }
-    if (auto photons = object.optional("photons")) render.photons = readPhotons(*photons);
+    // The method and its settings are read by the methods themselves (render/
+    // light_transport_registry.h); core keeps the section as written.
+    if (auto transport = object.optional("light_transport")) {
+        if (!transport->isObject())
+            transport->failExpected("an object (a method and its settings)");
+        render.lightTransport = transport->json().dump();
+    }
+    // Where the settings of scenes written before the light-transport section went.
+    object.forbid("photons",
+                  "moved to render.light_transport: {\"method\": \"photons\", \"photons\": {...}} "
+                  "(mode \"auto\", \"on\", \"off\" is method \"auto\", \"photons\", "
+                  "\"light_volumes\")");
+    object.forbid("shadows",
+                  "moved to render.light_transport: {\"light_volumes\": {\"shadows\": ...}}");
+    object.forbid("shadow_step_voxels",
+                  "moved to render.light_transport: {\"light_volumes\": {\"shadow_step_voxels\": "
+                  "...}}");
     object.finish();
     return render;
 }

@@ -263,33 +263,6 @@ struct ReceiverSpec {
     std::string jsonPath;    // e.g. "/receivers/0", for messages raised after parsing
 };
 
-// Where the viewing pass gets a light's transmittance: a volume computed once per change of
-// lights or extinction by marching from every voxel (camera moves reuse it); the same volume
-// swept slice by slice for directional lights (faster, blurs shadow edges); or a ray marched
-// toward the light from every sample (the reference, as OpenVDB's vdb_render does).
-enum class ShadowMode { Volume, Swept, Marched };
-
-// Whether light reaches the medium through photons traced along curved paths (Sun et al. 2008;
-// render/photon_radiance.h) or straight through light volumes. Auto: photons when light can bend
-// on its way (some material has ior ≠ 1) and something scatters it toward the camera.
-enum class PhotonMode { Auto, On, Off };
-
-struct PhotonRenderSettings {
-    PhotonMode mode = PhotonMode::Auto;
-    int perSide = 128;            // N: N×N photons per light (six N×N faces for a light inside)
-    float minStepVoxels = 1.0f;   // Δs_min of the adaptive march, in voxels
-    float fluxThreshold = 1e-4f;  // a photon is dropped below this fraction of its initial flux
-    // The march stops once fewer than this fraction of the photons are active after a round of
-    // stepsPerRound steps (render/photon_tracing.h PhotonSettings); 0: never.
-    float stopFraction = 1e-3f;
-    int stepsPerRound = 32;
-    // Optical depth by which extinction may vary across an octree node that photons cross in one
-    // step (render/refraction_volume.h OctreeSettings::kappaTolerance); 0: it does not limit
-    // steps, as in Sun et al. 0.1 (BENCHMARKS.md): 65x less image error than 0 on the glass
-    // sphere in fog, for 2.4x the photon steps.
-    float kappaTolerance = 0.1f;
-};
-
 // The curve between exposure and the sRGB encoding of PNG output and the viewer
 // (shaders/shared/tone_map.h). EXR output stays linear.
 enum class ToneCurve { Linear, Filmic };
@@ -298,14 +271,14 @@ struct RenderSettings {
     int width = 640;
     int height = 480;
     float stepVoxels = 1.0f;         // view-ray step, in voxels of the render volume
-    float shadowStepVoxels = 3.0f;   // step toward the light
     float minTransmittance = 1e-3f;  // a view ray stops when every channel is below this
     float exposure = 0.0f;           // stops; the tone map multiplies by 2^exposure
     ToneCurve toneCurve = ToneCurve::Filmic;
-    ShadowMode shadows = ShadowMode::Swept;  // fastest, and most accurate at default steps
-                                             // on smoke (BENCHMARKS.md)
     std::uint32_t seed = 0;
-    PhotonRenderSettings photons;
+    // render.light_transport as written (compact JSON): the method and each method's settings
+    // section. Core does not know the methods; they read it themselves
+    // (render/light_transport_registry.h), errors at "<file>:/render/light_transport/...".
+    std::string lightTransport = "{}";
 };
 
 struct OutputSettings {

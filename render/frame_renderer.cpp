@@ -7,8 +7,8 @@
 #include "render/environment_map.h"
 #include "render/gl_context.h"
 #include "render/input_key.h"
+#include "render/light_transport_registry.h"
 #include "render/params_buffer.h"
-#include "render/photon_radiance.h"
 #include "render/refraction_volume.h"
 #include "render/view_params.h"
 #include "render/view_pass.h"
@@ -42,13 +42,17 @@ FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* con
         textures_ = std::make_unique<VolumeTextures>();
         paramsBuffer_ = std::make_unique<ParamsBuffer>();
         hardwareTrilinear_ = useHardwareTrilinear(*gl_);
+        device_.gpu = true;
+        device_.hardwareTrilinear = hardwareTrilinear_;
         // The CPU twin's rounding where it is cheap (software rasterizers): bit-identical photons.
-        exactPhotonMath_ = isSoftwareRenderer(gl_->rendererName());
-        lightVolumesGpu_ = std::make_unique<LightVolumesGpu>(hardwareTrilinear_);
+        device_.exactMath = isSoftwareRenderer(gl_->rendererName());
         viewPass_ = std::make_unique<ViewPassGpu>(hardwareTrilinear_);
         refractionGpu_ = std::make_unique<RefractionVolumesGpu>();
         if (!scene_.meshes.empty()) voxelizerGpu_ = std::make_unique<MeshVoxelizerGpu>();
     }
+    // A bad method or setting fails here, before any frame is rendered.
+    transport_ = makeLightTransport(scene_, device_);
+    transportSection_ = scene_.render.lightTransport;
     environment_ = std::make_unique<EnvironmentMap>(backend_ == Backend::Gpu);
     timer_ = std::make_unique<GpuStageTimer>(backend_ == Backend::Gpu);
 }
@@ -58,61 +62,15 @@ FrameRenderer::~FrameRenderer() {
     timer_.reset();
     environment_.reset();
     viewPass_.reset();
-    photonsGpu_.reset();
+    transport_.reset();
     voxelizerGpu_.reset();
     refractionGpu_.reset();
-    lightVolumesGpu_.reset();
     paramsBuffer_.reset();
     textures_.reset();
     ownContext_.reset();
 }
 
 namespace {
-
-void appendVersions(std::vector<unsigned char>& key, const std::vector<const DenseGrid*>& grids) {
-    for (const DenseGrid* g : grids) appendBytes(key, &g->version, sizeof(g->version));
-}
-
-// The bytes the light volumes and the photon volumes depend on: the parameters without camera
-// and image settings, and the versions of the field grids. Equal bytes, equal volumes.
-std::vector<unsigned char> lightVolumeInputs(const ViewSetup& setup,
-                                             const std::vector<const DenseGrid*>& grids) {
-    shared::GpuViewParams p = setup.params;
-    p.cameraOrigin = p.cameraRight = p.cameraUp = p.cameraForward = glm::vec4(0.0f);
-    p.image.x = p.image.y = 0;
-    p.background = glm::vec4(0.0f);
-    p.environment = glm::ivec4(0);
-    p.environmentSky = p.environmentHorizon = p.environmentGround = glm::vec4(0.0f);
-    // Receivers stop photons but not the straight light of light volumes; their albedo only
-    // shades the view.
-    p.pipeline.w = 0;
-    for (shared::GpuReceiver& r : p.receivers) r = shared::GpuReceiver{};
-    std::vector<unsigned char> key;
-    appendBytes(key, &p, sizeof(p));
-    appendVersions(key, grids);
-    return key;
-}
-
-// The photon volumes: the light volumes' inputs and the photon settings.
-std::vector<unsigned char> photonInputs(const ViewSetup& setup,
-                                        const std::vector<const DenseGrid*>& grids,
-                                        const PhotonSettings& settings) {
-    std::vector<unsigned char> key = lightVolumeInputs(setup, grids);
-    for (int r = 0; r < setup.params.pipeline.w; ++r) {
-        appendBytes(key, &setup.params.receivers[r].plane, sizeof(glm::vec4));
-        appendBytes(key, &setup.params.receivers[r].texels, sizeof(glm::ivec4));
-    }
-    appendBytes(key, &settings.photonsPerSide, sizeof(settings.photonsPerSide));
-    appendBytes(key, &settings.minStepVoxels, sizeof(settings.minStepVoxels));
-    appendBytes(key, &settings.fluxThreshold, sizeof(settings.fluxThreshold));
-    appendBytes(key, &settings.maxSteps, sizeof(settings.maxSteps));
-    // The stop rule is checked once per round, so the round size changes what it cuts.
-    appendBytes(key, &settings.stepsPerRound, sizeof(settings.stepsPerRound));
-    appendBytes(key, &settings.stopFraction, sizeof(settings.stopFraction));
-    appendBytes(key, &settings.seed, sizeof(settings.seed));
-    appendBytes(key, &settings.frame, sizeof(settings.frame));
-    return key;
-}
 
 // The bytes the ∇n volume (and the octree built on its n) depend on: the volume, the materials'
 // index maps (ior − 1, 1/T_ambient) and field slots, and the versions of the field grids.
@@ -130,7 +88,7 @@ std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
     }
     std::vector<unsigned char> key;
     appendBytes(key, values.data(), values.size() * sizeof(float));
-    appendVersions(key, grids);
+    for (const DenseGrid* g : grids) appendBytes(key, &g->version, sizeof(g->version));
     return key;
 }
 
@@ -185,10 +143,10 @@ Image FrameRenderer::render(int frame) {
     const CameraFrame camera =
         makeCameraFrame(scene_.camera, volume_.bounds, scene_.render.width, scene_.render.height);
     const Image& environment = environment_->image();
-    const ViewSetup setup =
+    const ViewSetup setupWithoutTransport =
         makeViewSetup(scene_, volume_, camera, glm::ivec2(environment.width, environment.height));
     std::vector<const DenseGrid*> slotGrids;
-    for (const std::string& name : setup.slotFields) {
+    for (const std::string& name : setupWithoutTransport.slotFields) {
         if (meshOfField(scene_, name) >= 0) {  // written by meshFields_ above
             slotGrids.push_back(&dense_.at(name));
             continue;
@@ -203,27 +161,24 @@ Image FrameRenderer::render(int frame) {
     }
     timer_->end();
 
-    const bool needLights = viewNeedsLightVolumes(setup);
-    std::vector<unsigned char> lightInputs;
-    if (needLights) lightInputs = lightVolumeInputs(setup, slotGrids);
-    const bool lightsChanged = needLights && lightInputs != lightInputs_;
+    updateTransport(setupWithoutTransport, slotGrids);
+    ViewSetup setup = setupWithoutTransport;
+    transport_->configure(scene_, setup);
+    const TransportNeeds needs = transport_->needs();
+    std::vector<unsigned char> transportKey = transport_->cacheKey(setup, slotGrids);
+    const bool transportActive = !transportKey.empty();
+    const bool transportChanged = transportActive && transportKey != transportInputs_;
     const bool curved = setup.params.pipeline.x != 0;
-    const bool photons = setup.params.pipeline.y != 0;
-    // Photons march through the ∇n and octree volumes even where n ≡ 1 (their steps then grow
-    // to the octree's limit).
+    const bool wantGradient = curved || (transportActive && needs.gradient);
+    const bool wantOctree = transportActive && needs.octree;
     std::vector<unsigned char> refractionInputs;
-    if (curved || photons) refractionInputs = gradientInputs(setup, slotGrids);
-    const bool gradientChanged = (curved || photons) && refractionInputs != gradientInputs_;
-    const OctreeSettings octreeSettings = octreeSettingsFor(scene_);
+    if (wantGradient) refractionInputs = gradientInputs(setup, slotGrids);
+    const bool gradientChanged = wantGradient && refractionInputs != gradientInputs_;
     std::vector<unsigned char> octreeKey;
-    if (photons) octreeKey = octreeInputs(setup, refractionInputs, octreeSettings);
-    const bool octreeChanged = photons && octreeKey != octreeInputs_;
+    if (wantOctree) octreeKey = octreeInputs(setup, refractionInputs, needs.octreeSettings);
+    const bool octreeChanged = wantOctree && octreeKey != octreeInputs_;
     // n < 1 from a negative field is an input error, stopped before any stage uses it.
     if (gradientChanged || octreeChanged) checkRefractiveIndex(scene_, fields_, dense_);
-    const PhotonSettings photonSettings = photonSettingsFor(scene_);
-    std::vector<unsigned char> photonKey;
-    if (photons) photonKey = photonInputs(setup, slotGrids, photonSettings);
-    const bool photonsChanged = photons && photonKey != photonInputs_;
 
     if (backend_ == Backend::Cpu) {
         if (gradientChanged) {
@@ -233,94 +188,72 @@ Image FrameRenderer::render(int frame) {
         }
         if (octreeChanged) {
             timer_->begin("octree");
-            octreeCpu_ = computeOctreeCpu(setup, gradientCpu_, octreeSettings, slotGrids);
+            octreeCpu_ = computeOctreeCpu(setup, gradientCpu_, needs.octreeSettings, slotGrids);
             timer_->end();
         }
-        if (photonsChanged) {
-            timer_->begin("photons");
-            photonsCpu_ = computePhotonRadianceCpu(setup, slotGrids, gradientCpu_, octreeCpu_,
-                                                   photonSettings);
-            timer_->end();
-            photonSteps_ += photonsCpu_.steps;
-        }
-        if (lightsChanged) {
-            timer_->begin("light");
-            lightVolumesCpu_ = computeLightVolumesCpu(setup, slotGrids);
-            timer_->end();
-        }
-        timer_->begin("view");
-        // Empty stand-ins by reference: `cond ? member : {}` would copy the member every frame.
-        static const std::vector<LightVolumeCpu> noLightVolumes;
-        static const std::vector<glm::vec4> noGradient;
-        Image image = renderViewCpu(
-            setup, slotGrids, needLights ? lightVolumesCpu_ : noLightVolumes,
-            curved ? gradientCpu_ : noGradient, photons ? &photonsCpu_ : nullptr, &environment);
+        if (transportChanged)
+            transport_->runCpu({setup, slotGrids, gradientCpu_, octreeCpu_, timer_.get()});
+    } else {
+        timer_->begin("upload");
+        textures_->update(slotGrids);
+        paramsBuffer_->upload(setup.params);
         timer_->end();
-        commitInputs(gradientChanged, octreeChanged, photonsChanged, lightsChanged,
-                     std::move(refractionInputs), std::move(octreeKey), std::move(photonKey),
-                     std::move(lightInputs));
-        return image;
+        if (gradientChanged || octreeChanged)
+            refractionGpu_->compute(setup, *textures_, needs.octreeSettings, timer_.get(),
+                                    wantOctree);
+        if (transportChanged)
+            transport_->runGpu({setup, *textures_, *refractionGpu_, timer_.get()});
     }
-    timer_->begin("upload");
-    textures_->update(slotGrids);
-    paramsBuffer_->upload(setup.params);
-    timer_->end();
-    if (gradientChanged || octreeChanged)
-        refractionGpu_->compute(setup, *textures_, octreeSettings, timer_.get(),
-                                /*withOctree=*/photons);
-    if (photonsChanged) {
-        if (!photonsGpu_) photonsGpu_ = std::make_unique<PhotonRadianceGpu>(exactPhotonMath_);
-        photonsGpu_->compute(setup, *textures_, *refractionGpu_, photonSettings, timer_.get());
-        photonSteps_ += photonsGpu_->lastSteps();
+    if (transportChanged) {
+        lastTransportStats_ = transport_->stats();
+        transportSteps_ += lastTransportStats_.steps;
+        ++transportRuns_[transport_->name()];
+        transportInputs_ = std::move(transportKey);
     }
-    if (lightsChanged) lightVolumesGpu_->compute(setup, *textures_, timer_.get());
-    commitInputs(gradientChanged, octreeChanged, photonsChanged, lightsChanged,
-                 std::move(refractionInputs), std::move(octreeKey), std::move(photonKey),
-                 std::move(lightInputs));
-    return viewPass_->render(
-        setup, *textures_, *lightVolumesGpu_, curved ? refractionGpu_->gradientTexture() : 0u,
-        photons ? photonsGpu_.get() : nullptr, timer_.get(), environment_->texture());
-}
-
-void FrameRenderer::commitInputs(bool gradientChanged, bool octreeChanged, bool photonsChanged,
-                                 bool lightsChanged, std::vector<unsigned char> refractionInputs,
-                                 std::vector<unsigned char> octreeKey,
-                                 std::vector<unsigned char> photonKey,
-                                 std::vector<unsigned char> lightInputs) {
     if (octreeChanged) octreeInputs_ = std::move(octreeKey);
     if (gradientChanged) {
         gradientInputs_ = std::move(refractionInputs);
         ++gradientUpdates_;
     }
-    if (photonsChanged) {
-        photonInputs_ = std::move(photonKey);
-        ++photonUpdates_;
+
+    if (backend_ == Backend::Cpu) {
+        timer_->begin("view");
+        // Empty stand-ins by reference: `cond ? member : {}` would copy the member every frame.
+        static const std::vector<glm::vec4> noGradient;
+        Image image = renderViewCpu(
+            setup, slotGrids, transportActive ? transport_->outputCpu() : TransportOutputCpu{},
+            curved ? gradientCpu_ : noGradient, &environment);
+        timer_->end();
+        return image;
     }
-    if (lightsChanged) {
-        lightInputs_ = std::move(lightInputs);
-        ++lightVolumeUpdates_;
+    return viewPass_->render(setup, *textures_, transportActive ? transport_.get() : nullptr,
+                             curved ? refractionGpu_->gradientTexture() : 0u, timer_.get(),
+                             environment_->texture());
+}
+
+// The method in use keeps its output and its GPU resources while the scene asks for the same
+// method with the same settings. Another method ("auto" picks another when the materials or the
+// receivers change) takes over at once; new settings of the same method take over when they
+// change what its output depends on (its cache key), not when they only touch another method's
+// section.
+void FrameRenderer::updateTransport(const ViewSetup& base,
+                                    const std::vector<const DenseGrid*>& slotGrids) {
+    std::unique_ptr<LightTransport> fresh = makeLightTransport(scene_, device_);
+    bool adopt = fresh->name() != transport_->name();
+    if (!adopt && scene_.render.lightTransport != transportSection_) {
+        ViewSetup setup = base;
+        fresh->configure(scene_, setup);
+        adopt = transportInputs_.empty() || fresh->cacheKey(setup, slotGrids) != transportInputs_;
     }
+    transportSection_ = scene_.render.lightTransport;
+    if (!adopt) return;
+    transport_ = std::move(fresh);
+    transportInputs_.clear();
 }
 
-int64_t FrameRenderer::lastPhotonsTraced() const {
-    if (backend_ == Backend::Gpu) return photonsGpu_ ? photonsGpu_->lastPhotonsTraced() : 0;
-    return photonsCpu_.photonsTraced;
-}
-
-int64_t FrameRenderer::lastPhotonsCut() const {
-    if (backend_ == Backend::Gpu) return photonsGpu_ ? photonsGpu_->lastPhotonsCut() : 0;
-    return photonsCpu_.photonsCut;
-}
-
-int FrameRenderer::lastPhotonRounds() const {
-    if (backend_ == Backend::Gpu) return photonsGpu_ ? photonsGpu_->lastRounds() : 0;
-    return photonsCpu_.rounds;
-}
-
-PhotonRadianceCpu FrameRenderer::photonVolumes() const {
-    if (backend_ == Backend::Gpu)
-        return photonsGpu_ ? photonsGpu_->download() : PhotonRadianceCpu{};
-    return photonsCpu_;
+int FrameRenderer::transportRuns(const std::string& method) const {
+    auto it = transportRuns_.find(method);
+    return it == transportRuns_.end() ? 0 : it->second;
 }
 
 }  // namespace eikon

@@ -1,10 +1,11 @@
 #pragma once
 // One frame from scene to image: sources -> fields -> dense volumes -> (upload) -> ∇n, octree ->
-// photons or light volumes -> viewing pass. Each step reruns only when its input changed: files
-// are read when the frame's file changes, fields are resampled when their version or the volume
-// changes, textures are uploaded when the resampled grid changes, photons are traced when
-// lights, optics, the volume or the photon settings change (ARCHITECTURE.md's table). Runs on
-// the GPU (headless EGL context it owns) or on the CPU twin.
+// the scene's light-transport method (render/light_transport.h) -> viewing pass. Each step reruns
+// only when its input changed: files are read when the frame's file changes, fields are
+// resampled when their version or the volume changes, textures are uploaded when the resampled
+// grid changes, the ∇n volume and the octree when n (or, for the octree, κ) changes, and the
+// method when its own cache key does (lights, optics, the volume, its settings). Runs on the GPU
+// (headless EGL context it owns) or on the CPU twin.
 #include <map>
 #include <memory>
 #include <string>
@@ -16,17 +17,14 @@
 #include "core/scene_sources.h"
 #include "render/gpu_timer.h"
 #include "render/image.h"
-#include "render/light_volume.h"
+#include "render/light_transport.h"
 #include "render/mesh_fields.h"
-#include "render/photon_radiance.h"
 
 namespace eikon {
 
 class EnvironmentMap;
 class GlContext;
-class LightVolumesGpu;
 class MeshVoxelizerGpu;
-class PhotonRadianceGpu;
 class RefractionVolumesGpu;
 class ParamsBuffer;
 class VolumeTextures;
@@ -64,36 +62,24 @@ public:
     std::vector<StageTime> takeStats();
     int uploads() const;
     int resamples() const { return resamples_; }
-    // How often the light transmittance volumes were computed: only when lights, extinction or
-    // fields changed (a camera move reuses them).
-    int lightVolumeUpdates() const { return lightVolumeUpdates_; }
-    // How often the ∇n volume was computed: only for scenes with some ior ≠ 1, and only when
-    // fields, materials' ior or the volume changed.
+    // How often the light-transport method `method` ran: only when its cache key changed
+    // (lights, extinction, n, the volume or its settings; a camera move reruns nothing).
+    int transportRuns(const std::string& method) const;
+    // The method the scene's render.light_transport chose (render/light_transport_registry.h).
+    const LightTransport& lightTransport() const { return *transport_; }
+    // Particle steps of every run so far, and the last run's counters.
+    int64_t transportSteps() const { return transportSteps_; }
+    TransportStats lastTransportStats() const { return lastTransportStats_; }
+    // How often the ∇n volume was computed: only for scenes with some ior ≠ 1 or a method that
+    // needs it, and only when fields, materials' ior or the volume changed.
     int gradientUpdates() const { return gradientUpdates_; }
-    // How often photons were traced (only when lights, extinction, n, the volume or the photon
-    // settings changed), and the photon steps all those traces took together.
-    int photonUpdates() const { return photonUpdates_; }
-    int64_t photonSteps() const { return photonSteps_; }
-    // Photons that entered the box in the last trace (0 before any).
-    int64_t lastPhotonsTraced() const;
-    // The last trace's photons cut (step cap or stop rule) and rounds of the march with photons
-    // (render/photon_tracing.h); on the GPU, small read-backs.
-    int64_t lastPhotonsCut() const;
-    int lastPhotonRounds() const;
-    // The smoothed photon volumes of the last trace (the GPU's read back), for tests; empty
-    // when the scene has no photon lighting.
-    PhotonRadianceCpu photonVolumes() const;
     // How often the environment image was read: once per change of its path.
     int environmentLoads() const;
     // Whether the GPU shaders let the texture unit filter (see useHardwareTrilinear).
     bool hardwareTrilinear() const { return hardwareTrilinear_; }
 
 private:
-    // Records what the stages that ran were computed from, and counts them.
-    void commitInputs(bool gradientChanged, bool octreeChanged, bool photonsChanged,
-                      bool lightsChanged, std::vector<unsigned char> refractionInputs,
-                      std::vector<unsigned char> octreeKey, std::vector<unsigned char> photonKey,
-                      std::vector<unsigned char> lightInputs);
+    void updateTransport(const ViewSetup& base, const std::vector<const DenseGrid*>& slotGrids);
 
     Scene scene_;
     Backend backend_;
@@ -107,27 +93,24 @@ private:
     RenderVolume volume_;
     std::unique_ptr<VolumeTextures> textures_;
     std::unique_ptr<ParamsBuffer> paramsBuffer_;
-    std::unique_ptr<LightVolumesGpu> lightVolumesGpu_;
     std::unique_ptr<ViewPassGpu> viewPass_;
     std::unique_ptr<EnvironmentMap> environment_;
-    std::vector<LightVolumeCpu> lightVolumesCpu_;
     std::unique_ptr<RefractionVolumesGpu> refractionGpu_;
     std::vector<glm::vec4> gradientCpu_;
     std::vector<glm::vec4> octreeCpu_;
-    std::unique_ptr<PhotonRadianceGpu> photonsGpu_;
-    PhotonRadianceCpu photonsCpu_;
-    std::vector<unsigned char> gradientInputs_;  // what the ∇n volume was computed from
-    std::vector<unsigned char> octreeInputs_;    // what the octree was computed from
-    std::vector<unsigned char> photonInputs_;    // what the photon volumes were traced from
-    std::vector<unsigned char> lightInputs_;     // what the light volumes were computed from
+    TransportDevice device_;
+    std::unique_ptr<LightTransport> transport_;
+    std::string transportSection_;                // the render.light_transport it was made from
+    std::vector<unsigned char> gradientInputs_;   // what the ∇n volume was computed from
+    std::vector<unsigned char> octreeInputs_;     // what the octree was computed from
+    std::vector<unsigned char> transportInputs_;  // what the method's output was computed from
     std::unique_ptr<GpuStageTimer> timer_;
     int resamples_ = 0;
-    int lightVolumeUpdates_ = 0;
     int gradientUpdates_ = 0;
-    int photonUpdates_ = 0;
-    int64_t photonSteps_ = 0;
+    std::map<std::string, int> transportRuns_;
+    int64_t transportSteps_ = 0;
+    TransportStats lastTransportStats_;
     bool hardwareTrilinear_ = false;
-    bool exactPhotonMath_ = false;
 };
 
 }  // namespace eikon

@@ -4,8 +4,9 @@
 // both smoothed (render/smoothing.h). The viewing pass reads the result through
 // EK_PHOTON_RADIANCE_SLOT and EK_PHOTON_DIRECTION_SLOT (shaders/shared/view_march.h).
 //
-// It reruns only when its inputs change (render/frame_renderer.cpp): lights, extinction, n, the
-// volume or the photon settings; a camera move reuses the volumes and traces nothing.
+// The light-transport method "photons" (render/transport/photons/) runs it; the frame renderer
+// reruns it only when lights, extinction, n, the volume or the photon settings change: a camera
+// move reuses the volumes and traces nothing.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -25,14 +26,6 @@ class PhotonTracerGpu;
 class ShaderProgram;
 class VolumeSmootherGpu;
 class VolumeTextures;
-
-// The scene's photon settings. The jitter depends on the seed, not on the frame: a light and
-// medium that stay still keep their photons, so noise does not flicker in an animation, and a
-// frame change alone traces nothing.
-PhotonSettings photonSettingsFor(const Scene& scene);
-// The octree the photons march through: the paper's tolerances, and the scene's
-// render.photons.kappa_tolerance.
-OctreeSettings octreeSettingsFor(const Scene& scene);
 
 struct PhotonRadianceCpu {
     std::vector<glm::vec4> radiance;     // smoothed; rgb = Σ flux·length (see photon_tracing.h)

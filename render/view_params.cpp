@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include <glm/trigonometric.hpp>
-#include <glm/vector_relational.hpp>
 
 #include "core/error.h"
 
@@ -28,18 +27,6 @@ shared::GpuLight packLight(const LightSpec& l) {
     // smoothstep(outer, inner, cos) needs inner > outer; a hard edge gets a hair of width.
     g.radiance = v4(l.color * l.intensity, std::max(cosInner, cosOuter + 1e-6f));
     return g;
-}
-
-int shadowModeCode(ShadowMode mode) {
-    switch (mode) {
-        case ShadowMode::Marched:
-            return EK_SHADOWS_MARCHED;
-        case ShadowMode::Swept:
-            return EK_SHADOWS_SWEPT;
-        case ShadowMode::Volume:
-            break;
-    }
-    return EK_SHADOWS_VOLUME;
 }
 
 void packEnvironment(const Scene& scene, glm::ivec2 imageSize, shared::GpuViewParams& p) {
@@ -118,10 +105,10 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     p.cameraUp = v4(camera.up);
     p.cameraForward = v4(camera.forward);
     p.volumeMin = v4(volume.bounds.min, scene.render.stepVoxels * smallestVoxel);
-    p.volumeMax = v4(volume.bounds.max, scene.render.shadowStepVoxels * smallestVoxel);
+    p.volumeMax = v4(volume.bounds.max, 0.0f);  // w: the light-transport method's shadow step
     p.resolution = glm::ivec4(volume.resolution, int(scene.materials.size()));
     p.image = glm::ivec4(scene.render.width, scene.render.height, int(scene.lights.size()),
-                         shadowModeCode(scene.render.shadows));
+                         EK_SHADOWS_VOLUME);  // w: the light-transport method's
     p.background = v4(scene.environment.color, scene.render.minTransmittance);
     packEnvironment(scene, environmentSize, p);
 
@@ -143,35 +130,14 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     for (const MaterialSpec& mat : scene.materials) refracts = refracts || mat.ior != 1.0f;
     p.pipeline = glm::ivec4(refracts ? 1 : 0, 0, 0, 0);
     packReceivers(scene, volume, p);
-    if (scenePhotonsWanted(scene)) {
-        for (size_t l = 0; l < scene.lights.size(); ++l)
-            if (lightEmitsPhotons(scene.lights[l].type)) p.pipeline.z |= 1 << l;
-        p.pipeline.y = p.pipeline.z != 0 ? 1 : 0;
-    }
     return setup;
 }
 
-bool lightEmitsPhotons(LightType) {
-    return true;  // directional, point and spot (shaders/shared/photons.h)
-}
-
-bool scenePhotonsWanted(const Scene& scene) {
-    bool refracts = false, scatters = false;
-    for (const MaterialSpec& mat : scene.materials) {
-        refracts = refracts || mat.ior != 1.0f;
-        scatters = scatters || glm::any(glm::greaterThan(mat.scattering, glm::vec3(0.0f)));
-    }
-    // Photons matter where something scatters them toward the camera, or a receiver shows them.
-    const bool shown = scatters || !scene.receivers.empty();
-    switch (scene.render.photons.mode) {
-        case PhotonMode::On:
-            return shown;
-        case PhotonMode::Auto:
-            return shown && refracts;
-        case PhotonMode::Off:
-            break;
-    }
-    return false;
+float smallestVoxelEdge(const shared::GpuViewParams& p) {
+    // As RenderVolume::voxelSize() computes it, so that steps equal those made from the volume.
+    const glm::vec3 voxel = (glm::vec3(p.volumeMax) - glm::vec3(p.volumeMin)) /
+                            glm::vec3(p.resolution.x, p.resolution.y, p.resolution.z);
+    return std::min({voxel.x, voxel.y, voxel.z});
 }
 
 }  // namespace eikon

@@ -17,16 +17,12 @@ struct ViewSetup {
 };
 
 // environmentSize: the width and height of the environment image (render/environment_map.h)
-// when scene.environment asks for one.
+// when scene.environment asks for one. The light-transport method writes its own part
+// (LightTransport::configure): which lights come through the fluence, how shadows are found.
 ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera,
                         glm::ivec2 environmentSize = glm::ivec2(0));
 
-// Whether the viewing pass takes in-scattered light from photon volumes (scene.render.photons:
-// "on" when something scatters or a receiver shows the light; "auto" when, besides, some
-// material refracts, so that straight light volumes would be wrong). makeViewSetup then sets
-// params.pipeline.y and, in pipeline.z, the lights that emit photons; the others keep their light
-// volumes.
-bool scenePhotonsWanted(const Scene& scene);
-bool lightEmitsPhotons(LightType type);
+// The smallest voxel edge of the render volume the params describe, in scene units.
+float smallestVoxelEdge(const shared::GpuViewParams& params);
 
 }  // namespace eikon

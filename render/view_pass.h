@@ -7,27 +7,23 @@
 
 #include "core/dense_grid.h"
 #include "render/image.h"
-#include "render/light_volume.h"
+#include "render/light_transport.h"
 #include "render/view_params.h"
 
 namespace eikon {
 
 class GpuStageTimer;
-class LightVolumesGpu;
-class PhotonRadianceGpu;
-struct PhotonRadianceCpu;
 class VolumeTextures;
 class ShaderProgram;
 
 // CPU twin: rows in parallel (TBB), each pixel independent, so the result does not depend on the
-// thread count. `lightVolumes` may be empty when viewNeedsLightVolumes(setup) is false.
-// `gradient` is the ∇n volume (render/refraction_volume.h) when setup.params.pipeline.x asks for
-// curved rays, else empty. `photons`: the smoothed photon volumes when pipeline.y asks for them.
-// `environment`: the environment image when params.environment.x asks for one.
+// thread count. `light`: the light-transport method's output (render/light_transport.h), empty
+// when the setup reads none. `gradient` is the ∇n volume (render/refraction_volume.h) when
+// setup.params.pipeline.x asks for curved rays, else empty. `environment`: the environment image
+// when params.environment.x asks for one.
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
-                    const std::vector<LightVolumeCpu>& lightVolumes,
-                    const std::vector<glm::vec4>& gradient = {},
-                    const PhotonRadianceCpu* photons = nullptr, const Image* environment = nullptr);
+                    const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient = {},
+                    const Image* environment = nullptr);
 
 // GPU pass; needs a current GL 4.3 context and the frame's parameters in the ParamsBuffer. Field
 // textures come from `textures` in slot order.
@@ -36,13 +32,13 @@ public:
     // hardwareTrilinear: let the texture unit filter (see shaders/shared/sampling.h).
     explicit ViewPassGpu(bool hardwareTrilinear = false);
     ~ViewPassGpu();
-    // gradientTexture: the ∇n volume for curved rays (0 when the rays are straight). photons:
-    // the smoothed photon volumes when setup.params.pipeline.y asks for them.
-    // environmentTexture: the environment image (render/environment_map.h) when
-    // setup.params.environment.x asks for one.
-    Image render(const ViewSetup& setup, VolumeTextures& textures, const LightVolumesGpu& lights,
-                 unsigned gradientTexture, const PhotonRadianceGpu* photons = nullptr,
-                 GpuStageTimer* timer = nullptr, unsigned environmentTexture = 0);
+    // light: the light-transport method whose last GPU run the setup reads (null when it reads
+    // none); it binds its output to the contract's units. gradientTexture: the ∇n volume for
+    // curved rays (0 when the rays are straight). environmentTexture: the environment image
+    // (render/environment_map.h) when setup.params.environment.x asks for one.
+    Image render(const ViewSetup& setup, VolumeTextures& textures, const LightTransport* light,
+                 unsigned gradientTexture, GpuStageTimer* timer = nullptr,
+                 unsigned environmentTexture = 0);
 
 private:
     std::unique_ptr<ShaderProgram> program_;

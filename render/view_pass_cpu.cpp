@@ -2,7 +2,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
-#include "render/photon_radiance.h"
+#include "render/light_volume.h"
 #include "render/receiver_map.h"
 #include "render/view_pass.h"
 #include "render/volume_kernels_cpu.h"
@@ -10,17 +10,17 @@
 namespace eikon {
 
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
-                    const std::vector<LightVolumeCpu>& lightVolumes,
-                    const std::vector<glm::vec4>& gradient, const PhotonRadianceCpu* photons,
+                    const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient,
                     const Image* environment) {
     const shared::GpuViewParams& p = setup.params;
     if (slotGrids.size() != setup.slotFields.size())
         throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
                                            " field grids, got " + std::to_string(slotGrids.size()));
     shared::ViewKernelCpu kernel{{p}};
-    if (viewNeedsLightVolumes(setup) && int(lightVolumes.size()) != p.image.z)
+    if (viewNeedsLightVolumes(setup) && int(light.lightTransmittance.size()) != p.image.z)
         throw Error("view pass (CPU)", "the light volumes were not computed");
-    for (size_t l = 0; l < lightVolumes.size(); ++l) kernel.lights[l] = lightVolumes[l].data();
+    for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
+        kernel.lights[l] = light.lightTransmittance[l];
     if (p.pipeline.x != 0) {
         if (gradient.size() !=
             size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z))
@@ -30,13 +30,13 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     if (p.pipeline.y != 0) {
         const size_t voxels =
             size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z);
-        if (!photons || photons->radiance.size() != voxels || photons->direction.size() != voxels)
-            throw Error("view pass (CPU)", "photon lighting needs the photon volumes");
-        kernel.photonRadiance = photons->radiance.data();
-        kernel.photonDirection = photons->direction.data();
-        if (photons->receiverMap.size() != receiverMapTexels(p))
+        if (!light.fluence || !light.direction || light.fluenceVoxels != voxels)
+            throw Error("view pass (CPU)", "lighting through the fluence needs its volumes");
+        kernel.photonRadiance = light.fluence;
+        kernel.photonDirection = light.direction;
+        if (light.receiverTexels != receiverMapTexels(p))
             throw Error("view pass (CPU)", "the receiver map was not computed");
-        kernel.receiverMap = photons->receiverMap.data();
+        kernel.receiverMap = light.receiverMap;
     }
     if (p.environment.x == EK_ENVIRONMENT_IMAGE) {
         if (!environment || environment->width != p.environment.y ||

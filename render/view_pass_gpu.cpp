@@ -3,8 +3,6 @@
 #include "core/error.h"
 #include "render/environment_map.h"
 #include "render/gpu_timer.h"
-#include "render/light_volume.h"
-#include "render/photon_radiance.h"
 #include "render/shader_program.h"
 #include "render/view_pass.h"
 #include "render/volume_textures.h"
@@ -22,9 +20,8 @@ ViewPassGpu::~ViewPassGpu() {
 }
 
 Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
-                          const LightVolumesGpu& lights, unsigned gradientTexture,
-                          const PhotonRadianceGpu* photons, GpuStageTimer* timer,
-                          unsigned environmentTexture) {
+                          const LightTransport* light, unsigned gradientTexture,
+                          GpuStageTimer* timer, unsigned environmentTexture) {
     const shared::GpuViewParams& p = setup.params;
     const int width = p.image.x, height = p.image.y;
     if (timer) timer->begin("view");
@@ -38,7 +35,7 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
     }
     glBindImageTexture(0, outputTexture_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     textures.bind();
-    lights.bind();
+    if (light) light->bindGpu();
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_3D, gradientTexture);
     if (p.environment.x == EK_ENVIRONMENT_IMAGE && !environmentTexture)
@@ -46,10 +43,8 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
     glActiveTexture(GL_TEXTURE0 + kEnvironmentTextureUnit);
     glBindTexture(GL_TEXTURE_2D, environmentTexture);
     glActiveTexture(GL_TEXTURE0);
-    if (p.pipeline.y != 0) {
-        if (!photons) throw Error("view pass", "photon lighting needs the photon volumes");
-        photons->bind();
-    }
+    if (p.pipeline.y != 0 && !light)
+        throw Error("view pass", "lighting through the fluence needs its volumes");
     program_->use();
     const auto local = program_->localSize();
     glDispatchCompute(GLuint((width + local[0] - 1) / local[0]),

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Times the photon stage of the glass-sphere scene (data/scenes/glass_sphere_fog.json, as in
-# scripts/bench-photons.sh) for several march settings (render.photons.steps_per_round and
+# scripts/bench-photons.sh) for several march settings (render.light_transport.photons.steps_per_round and
 # stop_fraction), runs interleaved so that a changing load hits every setting alike. Prints one
 # line per run: size, backend, setting, photon-stage ms (the larger of its CPU and GPU columns),
 # photon steps, photons cut, rounds.
@@ -25,7 +25,7 @@ scene["volume"]["resolution"] = int(res)
 photons = {"per_side": side}
 if len(sys.argv) > 4:
     photons.update({"steps_per_round": int(sys.argv[4]), "stop_fraction": float(sys.argv[5])})
-scene["render"]["photons"] = photons
+scene["render"]["light_transport"] = {"photons": photons}
 scene["output"] = {"directory": path + ".out", "name": "frame"}
 json.dump(scene, open(path, "w"))
 PY

@@ -21,7 +21,7 @@ res, side, w, h, path = sys.argv[1:]
 scene = json.load(open("data/scenes/glass_sphere_fog.json"))
 scene["volume"]["resolution"] = int(res)
 scene["render"].update({"width": int(w), "height": int(h)})
-scene["render"]["photons"] = {"per_side": int(side)}
+scene["render"]["light_transport"] = {"photons": {"per_side": int(side)}}
 scene["output"] = {"directory": sys.argv[5] + ".out", "name": "frame"}
 json.dump(scene, open(path, "w"))
 PY

@@ -231,7 +231,7 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
     CHECK(scene.render.width == 640);
     CHECK(scene.render.height == 480);
     CHECK(scene.render.stepVoxels == 1.0f);
-    CHECK(scene.render.shadowStepVoxels == 3.0f);
+    CHECK(scene.render.lightTransport == "{}");
     CHECK(scene.render.minTransmittance == model.render.minTransmittance);
     CHECK(scene.render.exposure == 0.0f);
     CHECK(scene.render.seed == 0u);
@@ -951,32 +951,31 @@ TEST_CASE("receivers parse with their defaults and name their mistakes", "[scene
     }
 }
 
-TEST_CASE("render.photons.stop_fraction and steps_per_round: defaults, 0 turns the rule off",
-          "[scene][photons]") {
-    const eikon::Scene defaults = eikon::parseScene(sceneWith(""), "smoke.json");
-    CHECK(defaults.render.photons.stopFraction == 1e-3f);
-    CHECK(defaults.render.photons.stepsPerRound == 32);
+TEST_CASE("render.light_transport is kept as written for the methods to read",
+          "[scene][light_transport]") {
+    // The methods and their settings live in render/ (render/light_transport_registry.h);
+    // core keeps the section, in file order, and checks only that it is an object.
     const eikon::Scene set = eikon::parseScene(
-        sceneWith(R"("render": {"photons": {"stop_fraction": 0, "steps_per_round": 1}})"),
+        sceneWith(R"("render": {"light_transport": {"method": "photons", "photons": {"per_side": 64,
+                  "stop_fraction": 0.5}}})"),
         "smoke.json");
-    CHECK(set.render.photons.stopFraction == 0.0f);
-    CHECK(set.render.photons.stepsPerRound == 1);
-    const Failure fraction = failureOf(sceneWith(R"("render": {"photons": {"stop_fraction": 1}})"));
-    CHECK(fraction.where == "smoke.json:/render/photons/stop_fraction");
-    const Failure steps = failureOf(sceneWith(R"("render": {"photons": {"steps_per_round": 0}})"));
-    CHECK(steps.where == "smoke.json:/render/photons/steps_per_round");
-    const Failure typo = failureOf(sceneWith(R"("render": {"photons": {"stop_fractions": 0.1}})"));
-    CHECK(typo.where == "smoke.json:/render/photons/stop_fractions");
-    CHECK_THAT(typo.reason, Contains("did you mean 'stop_fraction'?"));
+    CHECK(set.render.lightTransport ==
+          R"({"method":"photons","photons":{"per_side":64,"stop_fraction":0.5}})");
+    const Failure f = failureOf(sceneWith(R"("render": {"light_transport": [1]})"));
+    CHECK(f.where == "smoke.json:/render/light_transport");
+    CHECK_THAT(f.reason, Contains("expected an object"));
 }
 
-TEST_CASE("render.photons.kappa_tolerance: default 0.1, 0 turns it off, negative is refused",
-          "[scene][photons]") {
-    CHECK(eikon::parseScene(sceneWith(""), "smoke.json").render.photons.kappaTolerance == 0.1f);
-    CHECK(eikon::parseScene(sceneWith(R"("render": {"photons": {"kappa_tolerance": 0}})"),
-                            "smoke.json")
-              .render.photons.kappaTolerance == 0.0f);
-    const Failure f = failureOf(sceneWith(R"("render": {"photons": {"kappa_tolerance": -1}})"));
-    CHECK(f.where == "smoke.json:/render/photons/kappa_tolerance");
-    CHECK_THAT(f.reason, Contains(">= 0"));
+TEST_CASE("the render keys that moved into render.light_transport say where they went",
+          "[scene][light_transport]") {
+    const Failure photons = failureOf(sceneWith(R"("render": {"photons": {"mode": "off"}})"));
+    CHECK(photons.where == "smoke.json:/render/photons");
+    CHECK_THAT(photons.reason, Contains("moved to render.light_transport"));
+    CHECK_THAT(photons.reason, Contains("\"light_volumes\""));
+    const Failure shadows = failureOf(sceneWith(R"("render": {"shadows": "marched"})"));
+    CHECK(shadows.where == "smoke.json:/render/shadows");
+    CHECK_THAT(shadows.reason, Contains("{\"light_volumes\": {\"shadows\": ...}}"));
+    const Failure step = failureOf(sceneWith(R"("render": {"shadow_step_voxels": 2})"));
+    CHECK(step.where == "smoke.json:/render/shadow_step_voxels");
+    CHECK_THAT(step.reason, Contains("shadow_step_voxels"));
 }

@@ -226,7 +226,7 @@ TEST_CASE("eikon render steps a scene's water surface frame by frame", "[cli][wa
   "camera": {"position": [0, 2, 2], "look_at": [0, 0, 0]},
   "environment": {"type": "gradient", "zenith": [0.2, 0.3, 0.6], "horizon": [0.9, 0.9, 0.8],
                   "ground": [0.5, 0.3, 0.1]},
-  "render": {"width": 24, "height": 16, "photons": {"mode": "off"}},
+  "render": {"width": 24, "height": 16, "light_transport": {"method": "light_volumes"}},
   "output": {"name": "pool", "png": true},
   "time": {"fps": 24, "frame_start": 0, "frame_end": 2}
 })");

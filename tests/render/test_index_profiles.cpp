@@ -17,6 +17,7 @@
 #include "render/volume_kernels_cpu.h"
 #include "support/backends.h"
 #include "support/fluence_peak.h"
+#include "support/light_transport_setup.h"
 #include "support/linear_n2_medium.h"
 #include "support/photon_scene.h"
 #include "support/scene_builders.h"
@@ -284,7 +285,7 @@ TEST_CASE("the index-profile scenes render on the CPU twin", "[profiles][scenes]
         Scene scene = loadScene(test::sourcePath("data/scenes/" + std::string(name) + ".json"));
         scene.render.width = 40;
         scene.render.height = 30;
-        scene.render.photons.perSide = 32;
+        eikon::test::setPhotonSetting(scene, "per_side", 32);
         FrameRenderer renderer(scene, Backend::Cpu);
         const Image image = renderer.render(0);
         double total = 0.0;

@@ -15,6 +15,7 @@
 #include "render/params_buffer.h"
 #include "render/view_params.h"
 #include "render/volume_textures.h"
+#include "support/light_transport_setup.h"
 
 using namespace eikon;
 
@@ -44,14 +45,15 @@ struct BoxScene {
         scene.volume.bounds = {glm::vec3(-1.0f), glm::vec3(1.0f)};
         scene.volume.resolution = glm::ivec3(resolution);
         scene.render.width = scene.render.height = 8;
-        scene.render.shadows = shadows;
+        eikon::test::setShadows(scene, eikon::test::shadowName(shadows));
         fields.set(
             "density",
             makeBoxField(glm::vec3(-1.0f), glm::vec3(1.0f), 1.0f, 0.0f, 2.0f / float(resolution)),
             "test");
         volume = chooseRenderVolume(scene, fields);
         density = resampleToDense(fields.get("density"), volume);
-        setup = makeViewSetup(scene, volume, makeCameraFrame(scene.camera, volume.bounds, 8, 8));
+        setup = eikon::makeConfiguredViewSetup(scene, volume,
+                                               makeCameraFrame(scene.camera, volume.bounds, 8, 8));
     }
 
     std::vector<LightVolumeCpu> cpu() const { return computeLightVolumesCpu(setup, {&density}); }
@@ -199,20 +201,20 @@ TEST_CASE("light volumes rerun only when lights or extinction change", "[light]"
     for (Backend backend : {Backend::Cpu, Backend::Gpu}) {
         FrameRenderer r(scene, backend);
         r.render(0);
-        CHECK(r.lightVolumeUpdates() == 1);
+        CHECK(r.transportRuns("light_volumes") == 1);
         r.scene().camera.automatic = false;
         r.scene().camera.position = glm::vec3(3.0f, 1.0f, 2.0f);
         r.render(0);
-        CHECK(r.lightVolumeUpdates() == 1);  // a camera move reuses them
+        CHECK(r.transportRuns("light_volumes") == 1);  // a camera move reuses them
         r.scene().lights[0].direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
         r.render(0);
-        CHECK(r.lightVolumeUpdates() == 2);
+        CHECK(r.transportRuns("light_volumes") == 2);
         r.scene().materials[0].absorption = glm::vec3(0.5f);
         r.render(0);
-        CHECK(r.lightVolumeUpdates() == 3);
-        r.scene().render.shadows = ShadowMode::Marched;  // nothing reads them now
+        CHECK(r.transportRuns("light_volumes") == 3);
+        eikon::test::setShadows(r.scene(), "marched");  // nothing reads them now
         r.render(0);
-        CHECK(r.lightVolumeUpdates() == 3);
+        CHECK(r.transportRuns("light_volumes") == 3);
     }
 }
 

@@ -23,7 +23,7 @@ const char* const kBallScene = R"({
     "environment": {"type": "gradient", "zenith": [0.2, 0.3, 0.6], "horizon": [0.9, 0.9, 0.8],
                     "ground": [0.3, 0.25, 0.2]},
     "volume": {"resolution": 32},
-    "render": {"width": 40, "height": 30, "photons": {"mode": "off"}}
+    "render": {"width": 40, "height": 30, "light_transport": {"method": "light_volumes"}}
 })";
 
 }  // namespace

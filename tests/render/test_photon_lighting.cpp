@@ -14,12 +14,12 @@
 #include "render/gl_context.h"
 #include "render/image.h"
 #include "support/backends.h"
+#include "support/light_transport_setup.h"
 #include "support/scene_builders.h"
 
 using eikon::Backend;
 using eikon::FrameRenderer;
 using eikon::Image;
-using eikon::PhotonMode;
 using eikon::PhotonRadianceCpu;
 using eikon::Scene;
 using eikon::test::backendName;
@@ -36,8 +36,8 @@ namespace {
 // The slab of scene_builders.h lit through photons, one per voxel column.
 Scene photonLitSlab(glm::vec3 sigma, float irradiance) {
     Scene scene = eikon::test::scatteringSlab(sigma, irradiance);
-    scene.render.photons.mode = PhotonMode::On;
-    scene.render.photons.perSide = 40;
+    eikon::test::setTransportMethod(scene, "photons");
+    eikon::test::setPhotonSetting(scene, "per_side", 40);
     return scene;
 }
 
@@ -57,7 +57,7 @@ Scene glassInFog() {
     scene.camera = cameraAt(glm::vec3(0.0f, 0.3f, 4.0f), glm::vec3(0.0f), 45.0f);
     scene.render.width = 40;
     scene.render.height = 30;
-    scene.render.photons.perSide = 64;
+    eikon::test::setPhotonSetting(scene, "per_side", 64);
     return scene;
 }
 
@@ -72,8 +72,8 @@ TEST_CASE("photon lighting: single scattering in a slab matches the closed form"
         INFO(backendName(backend));
         FrameRenderer renderer(scene, backend);
         const Image image = renderer.render(0);
-        REQUIRE(renderer.photonUpdates() == 1);
-        REQUIRE(renderer.lightVolumeUpdates() == 0);  // the only light comes as photons
+        REQUIRE(renderer.transportRuns("photons") == 1);
+        REQUIRE(renderer.transportRuns("light_volumes") == 0);  // the only light comes as photons
         const glm::vec4 p = image.at(image.width / 2, image.height / 2);
         for (int c = 0; c < 3; ++c) {
             const double s = sigma[c];
@@ -96,14 +96,14 @@ TEST_CASE("photon lighting: GPU volumes and image equal the CPU twin's", "[photo
     FrameRenderer cpu(scene, Backend::Cpu);
     const Image gpuImage = gpu.render(0);
     const Image cpuImage = cpu.render(0);
-    const PhotonRadianceCpu g = gpu.photonVolumes();
-    const PhotonRadianceCpu c = cpu.photonVolumes();
+    const PhotonRadianceCpu g = eikon::test::photonVolumesOf(gpu);
+    const PhotonRadianceCpu c = eikon::test::photonVolumesOf(cpu);
     REQUIRE(c.photonsTraced > 0);
     CHECK(g.photonsTraced == c.photonsTraced);
-    CHECK(gpu.lastPhotonsTraced() == c.photonsTraced);
-    CHECK(cpu.lastPhotonsTraced() == c.photonsTraced);
+    CHECK(gpu.lastTransportStats().particlesTraced == c.photonsTraced);
+    CHECK(cpu.lastTransportStats().particlesTraced == c.photonsTraced);
     CHECK(g.steps == c.steps);
-    CHECK(gpu.photonSteps() == cpu.photonSteps());
+    CHECK(gpu.transportSteps() == cpu.transportSteps());
     REQUIRE(g.radiance.size() == c.radiance.size());
     if (gpu.context() && eikon::isSoftwareRenderer(gpu.context()->rendererName())) {
         // llvmpipe runs the twin's exact math: the same bits after resolve and smoothing.
@@ -141,48 +141,48 @@ TEST_CASE("photon lighting: a camera move traces no photons, a light change does
     for (Backend backend : {Backend::Gpu, Backend::Cpu}) {
         INFO(backendName(backend));
         Scene scene = glassInFog();
-        scene.render.photons.perSide = 32;
+        eikon::test::setPhotonSetting(scene, "per_side", 32);
         scene.render.width = 24;
         scene.render.height = 18;
         FrameRenderer renderer(scene, backend);
         const Image first = renderer.render(0);
-        REQUIRE(renderer.photonUpdates() == 1);
-        const int64_t steps = renderer.photonSteps();
+        REQUIRE(renderer.transportRuns("photons") == 1);
+        const int64_t steps = renderer.transportSteps();
         REQUIRE(steps > 0);
         // The counts --stats prints, against the trace's own.
-        const PhotonRadianceCpu traced = renderer.photonVolumes();
-        CHECK(renderer.lastPhotonRounds() == traced.rounds);
+        const PhotonRadianceCpu traced = eikon::test::photonVolumesOf(renderer);
+        CHECK(renderer.lastTransportStats().rounds == traced.rounds);
         CHECK(traced.rounds > 0);
-        CHECK(renderer.lastPhotonsCut() == traced.photonsCut);
+        CHECK(renderer.lastTransportStats().particlesCut == traced.photonsCut);
 
         renderer.scene().camera.position = glm::vec3(1.0f, 0.5f, 3.5f);
         const Image moved = renderer.render(0);
         CHECK(moved.pixels != first.pixels);
-        CHECK(renderer.photonUpdates() == 1);
-        CHECK(renderer.photonSteps() == steps);  // zero photon steps for the camera move
+        CHECK(renderer.transportRuns("photons") == 1);
+        CHECK(renderer.transportSteps() == steps);  // zero photon steps for the camera move
         CHECK(renderer.gradientUpdates() == 1);
 
         renderer.render(1);  // a new frame of the same still scene
-        CHECK(renderer.photonSteps() == steps);
+        CHECK(renderer.transportSteps() == steps);
 
         renderer.scene().lights[0].direction = glm::normalize(glm::vec3(-0.3f, -1.0f, 0.1f));
         renderer.render(0);
-        CHECK(renderer.photonUpdates() == 2);
-        CHECK(renderer.photonSteps() > steps);
+        CHECK(renderer.transportRuns("photons") == 2);
+        CHECK(renderer.transportSteps() > steps);
         CHECK(renderer.gradientUpdates() == 1);  // n did not change
 
         renderer.scene().materials[0].scattering = glm::vec3(0.3f);  // σ: photons rerun
         renderer.render(0);
-        CHECK(renderer.photonUpdates() == 3);
+        CHECK(renderer.transportRuns("photons") == 3);
         CHECK(renderer.gradientUpdates() == 1);
 
         // The march's round size and stop rule decide which photons are cut: photons rerun.
-        renderer.scene().render.photons.stopFraction = 0.01f;
+        eikon::test::setPhotonSetting(renderer.scene(), "stop_fraction", 0.01f);
         renderer.render(0);
-        CHECK(renderer.photonUpdates() == 4);
-        renderer.scene().render.photons.stepsPerRound = 5;
+        CHECK(renderer.transportRuns("photons") == 4);
+        eikon::test::setPhotonSetting(renderer.scene(), "steps_per_round", 5);
         renderer.render(0);
-        CHECK(renderer.photonUpdates() == 5);
+        CHECK(renderer.transportRuns("photons") == 5);
         CHECK(renderer.gradientUpdates() == 1);
     }
 }
@@ -191,11 +191,11 @@ TEST_CASE("photon lighting: scenes that need no photons trace none", "[photons][
     SECTION("n = 1 everywhere, photons on auto: straight light volumes") {
         Scene scene = glassInFog();
         scene.materials[1].ior = 1.0f;
-        scene.render.photons.mode = PhotonMode::Auto;
+        eikon::test::setTransportMethod(scene, "auto");
         FrameRenderer renderer(scene, Backend::Cpu);
         renderer.render(0);
-        CHECK(renderer.photonUpdates() == 0);
-        CHECK(renderer.lightVolumeUpdates() == 1);
+        CHECK(renderer.transportRuns("photons") == 0);
+        CHECK(renderer.transportRuns("light_volumes") == 1);
         CHECK(renderer.gradientUpdates() == 0);
     }
     SECTION("refraction but nothing scatters: no photons, no light volumes") {
@@ -203,16 +203,16 @@ TEST_CASE("photon lighting: scenes that need no photons trace none", "[photons][
         scene.materials[0].scattering = glm::vec3(0.0f);
         FrameRenderer renderer(scene, Backend::Cpu);
         renderer.render(0);
-        CHECK(renderer.photonUpdates() == 0);
-        CHECK(renderer.lightVolumeUpdates() == 0);
+        CHECK(renderer.transportRuns("photons") == 0);
+        CHECK(renderer.transportRuns("light_volumes") == 0);
         CHECK(renderer.gradientUpdates() == 1);  // the view rays still bend
     }
     SECTION("photons off: light volumes even with refraction") {
         Scene scene = glassInFog();
-        scene.render.photons.mode = PhotonMode::Off;
+        eikon::test::setTransportMethod(scene, "light_volumes");
         FrameRenderer renderer(scene, Backend::Cpu);
         renderer.render(0);
-        CHECK(renderer.photonUpdates() == 0);
-        CHECK(renderer.lightVolumeUpdates() == 1);
+        CHECK(renderer.transportRuns("photons") == 0);
+        CHECK(renderer.transportRuns("light_volumes") == 1);
     }
 }

@@ -20,12 +20,12 @@
 #include "render/view_params.h"
 #include "render/volume_kernels_cpu.h"
 #include "support/backends.h"
+#include "support/light_transport_setup.h"
 #include "support/scene_builders.h"
 
 using eikon::Backend;
 using eikon::FrameRenderer;
 using eikon::Image;
-using eikon::PhotonMode;
 using eikon::PhotonRadianceCpu;
 using eikon::ReceiverMethod;
 using eikon::ReceiverSpec;
@@ -60,7 +60,8 @@ ReceiverSpec floorReceiver(ReceiverMethod method) {
 
 // A clear volume (a material that does nothing) over a floor, lit by a directional light tilted
 // 30° from the vertical: the floor's irradiance is E cos 30° everywhere the light reaches it.
-Scene litFloor(ReceiverMethod method, PhotonMode photons) {
+// `method`: the light-transport method, "photons" or "light_volumes".
+Scene litFloor(ReceiverMethod method, const std::string& transport) {
     Scene scene;
     scene.sources.push_back(
         boxSource("density", glm::vec3(-1.0f), glm::vec3(1.0f), 1.0f, 0.0f, 0.0625f));
@@ -73,8 +74,8 @@ Scene litFloor(ReceiverMethod method, PhotonMode photons) {
     scene.camera = cameraAt(glm::vec3(0.0f, 2.5f, 1.2f), glm::vec3(0.0f, kFloorY, 0.0f), 40.0f);
     scene.render.width = 21;
     scene.render.height = 15;
-    scene.render.photons.mode = photons;
-    scene.render.photons.perSide = 256;
+    eikon::test::setTransportMethod(scene, transport);
+    eikon::test::setPhotonSetting(scene, "per_side", 256);
     return scene;
 }
 
@@ -95,9 +96,10 @@ std::vector<double> centralTexels(const eikon::shared::GpuViewParams& p,
 }
 
 eikon::ViewSetup setupOf(const Scene& scene, const FrameRenderer& renderer) {
-    return eikon::makeViewSetup(scene, renderer.volume(),
-                                eikon::makeCameraFrame(scene.camera, renderer.volume().bounds,
-                                                       scene.render.width, scene.render.height));
+    return eikon::makeConfiguredViewSetup(
+        scene, renderer.volume(),
+        eikon::makeCameraFrame(scene.camera, renderer.volume().bounds, scene.render.width,
+                               scene.render.height));
 }
 
 }  // namespace
@@ -108,18 +110,19 @@ TEST_CASE("receivers: a floor under a tilted light gets E cos θ through every m
     struct Case {
         const char* name;
         ReceiverMethod method;
-        PhotonMode photons;
+        const char* transport;
     };
     for (const Case& c :
-         {Case{"plane map", ReceiverMethod::Plane, PhotonMode::On},
-          Case{"voxel photon volumes", ReceiverMethod::Voxels, PhotonMode::On},
-          Case{"light volume, no photons", ReceiverMethod::Plane, PhotonMode::Off}}) {
+         {Case{"plane map", ReceiverMethod::Plane, "photons"},
+          Case{"voxel photon volumes", ReceiverMethod::Voxels, "photons"},
+          Case{"light volume, no photons", ReceiverMethod::Plane, "light_volumes"}}) {
         for (Backend backend : {Backend::Gpu, Backend::Cpu}) {
             INFO(c.name << ", " << backendName(backend));
-            const Scene scene = litFloor(c.method, c.photons);
+            const Scene scene = litFloor(c.method, c.transport);
             FrameRenderer renderer(scene, backend);
             const Image image = renderer.render(0);
-            CHECK(renderer.photonUpdates() == (c.photons == PhotonMode::On ? 1 : 0));
+            CHECK(renderer.transportRuns("photons") ==
+                  (std::string(c.transport) == "photons" ? 1 : 0));
             const glm::vec4 centre = image.at(image.width / 2, image.height / 2);
             INFO("centre pixel " << centre.g << ", expected albedo/π · E cos θ = " << expected);
             // Photons: the jittered grid's noise, a few tenths of a percent over the bilinear
@@ -134,10 +137,10 @@ TEST_CASE("receivers: a floor under a tilted light gets E cos θ through every m
 
 TEST_CASE("receivers: the plane map is flat, sums to the received flux and balances energy",
           "[receivers][photons]") {
-    const Scene scene = litFloor(ReceiverMethod::Plane, PhotonMode::On);
+    const Scene scene = litFloor(ReceiverMethod::Plane, "photons");
     FrameRenderer renderer(scene, Backend::Cpu);
     renderer.render(0);
-    const PhotonRadianceCpu photons = renderer.photonVolumes();
+    const PhotonRadianceCpu photons = eikon::test::photonVolumesOf(renderer);
     const eikon::ViewSetup setup = setupOf(scene, renderer);
     REQUIRE(photons.receiverMap.size() == eikon::receiverMapTexels(setup.params));
     REQUIRE(photons.receiverMap.size() == 64u * 64u);
@@ -169,7 +172,7 @@ TEST_CASE("receivers: the plane map is flat, sums to the received flux and balan
 }
 
 TEST_CASE("receivers: GPU map and image equal the CPU twin's", "[receivers][gpu]") {
-    Scene scene = litFloor(ReceiverMethod::Plane, PhotonMode::On);
+    Scene scene = litFloor(ReceiverMethod::Plane, "photons");
     // Something to bend and shadow: a glass ball over the floor, in thin fog.
     scene.sources.push_back(
         eikon::test::sphereSource("n", glm::vec3(0.0f, 0.2f, 0.0f), 0.4f, 1.0f, 0.1f));
@@ -181,8 +184,8 @@ TEST_CASE("receivers: GPU map and image equal the CPU twin's", "[receivers][gpu]
     FrameRenderer cpu(scene, Backend::Cpu);
     const Image gpuImage = gpu.render(0);
     const Image cpuImage = cpu.render(0);
-    const PhotonRadianceCpu g = gpu.photonVolumes();
-    const PhotonRadianceCpu c = cpu.photonVolumes();
+    const PhotonRadianceCpu g = eikon::test::photonVolumesOf(gpu);
+    const PhotonRadianceCpu c = eikon::test::photonVolumesOf(cpu);
     REQUIRE(c.receiverMap.size() == g.receiverMap.size());
     REQUIRE_FALSE(c.receiverMap.empty());
     for (int ch = 0; ch < 3; ++ch) CHECK(g.totals.received[ch] == c.totals.received[ch]);
@@ -217,14 +220,14 @@ TEST_CASE("receivers: the plane map draws a shadow edge sharper than the voxel f
           "[receivers][photons]") {
     // A thick absorbing block over x < 0 under a light straight down: its shadow's edge on the
     // floor lies at x = 0, geometrically sharp.
-    Scene scene = litFloor(ReceiverMethod::Plane, PhotonMode::On);
+    Scene scene = litFloor(ReceiverMethod::Plane, "photons");
     scene.lights[0] = directionalLight(glm::vec3(0.0f, -1.0f, 0.0f), kIrradiance);
     scene.sources.push_back(boxSource("kappa", glm::vec3(-1.0f, 0.0f, -1.0f),
                                       glm::vec3(0.0f, 0.75f, 1.0f), 1.0f, 0.0f, 0.0625f));
     scene.materials.push_back(material("block", "kappa", glm::vec3(20.0f)));
     FrameRenderer renderer(scene, Backend::Cpu);
     renderer.render(0);
-    const PhotonRadianceCpu photons = renderer.photonVolumes();
+    const PhotonRadianceCpu photons = eikon::test::photonVolumesOf(renderer);
     eikon::ViewSetup setup = setupOf(scene, renderer);
 
     // Both methods through the view pass's own function, on the same photons.
@@ -255,7 +258,7 @@ TEST_CASE("receivers: the plane map draws a shadow edge sharper than the voxel f
 }
 
 TEST_CASE("receivers: a plane outside the render volume is an error naming it", "[receivers]") {
-    Scene scene = litFloor(ReceiverMethod::Plane, PhotonMode::On);
+    Scene scene = litFloor(ReceiverMethod::Plane, "photons");
     scene.path = "floor.json";
     scene.receivers[0].position = -1.0f;  // on the volume's face: nothing could reach it
     try {

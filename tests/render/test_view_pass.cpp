@@ -19,6 +19,7 @@
 #include "render/frame_renderer.h"
 #include "render/image.h"
 #include "support/backends.h"
+#include "support/light_transport_setup.h"
 #include "support/scene_builders.h"
 #include "support/test_paths.h"
 
@@ -42,13 +43,10 @@ using eikon::test::material;
 using eikon::test::relativeError;
 using eikon::test::scratchDir;
 using eikon::test::setVolume;
+using eikon::test::shadowName;
 using eikon::test::sphereSource;
 
 namespace {
-
-const char* shadowName(ShadowMode m) {
-    return m == ShadowMode::Volume ? "volume" : m == ShadowMode::Swept ? "swept" : "marched";
-}
 
 // Box [-1, 1]^3 of density 1 on a 0.05 grid, absorbing kappa per unit (grey), in front of a white
 // background, seen along −z from the +z axis. Odd image sizes put a pixel centre on the axis.
@@ -170,7 +168,7 @@ TEST_CASE("homogeneous cube: the centre pixel is exp(-kappa d) on both backends"
 TEST_CASE("GPU image equals the CPU twin's on a lit, scattering, emitting sphere", "[view]") {
     for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept, ShadowMode::Marched}) {
         Scene scene = litSphere();
-        scene.render.shadows = mode;
+        eikon::test::setShadows(scene, shadowName(mode));
         const Image gpu = renderFrame(scene, Backend::Gpu);
         const Image cpu = renderFrame(scene, Backend::Cpu);
         const TwinDifference diff = measureDifference(gpu, cpu);
@@ -315,7 +313,7 @@ TEST_CASE("an opaque blocker between the light and a scattering sphere shadows i
     for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept, ShadowMode::Marched}) {
         for (Backend backend : {Backend::Gpu, Backend::Cpu}) {
             INFO(backendName(backend) << ", shadows " << shadowName(mode));
-            scene.render.shadows = mode;
+            eikon::test::setShadows(scene, shadowName(mode));
             FrameRenderer renderer(scene, backend);
             const Image blocked = renderer.render(0);
             renderer.scene().materials[1].absorption = glm::vec3(0.0f);
@@ -346,7 +344,7 @@ TEST_CASE("single scattering in a slab lit from behind matches the closed form",
     for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept, ShadowMode::Marched}) {
         for (Backend backend : {Backend::Gpu, Backend::Cpu}) {
             INFO(backendName(backend) << ", shadows " << shadowName(mode));
-            scene.render.shadows = mode;
+            eikon::test::setShadows(scene, shadowName(mode));
             const glm::vec4 p = centrePixel(renderFrame(scene, backend));
             double meanT = 0;
             for (int c = 0; c < 3; ++c) {

@@ -1,0 +1,134 @@
+#pragma once
+// How light reaches the medium: the interface every light-transport method implements (Sun et
+// al.'s photons, straight light volumes, and the methods to come), and the one output contract
+// the viewing pass reads, whichever method produced it.
+//
+// A method is one folder under render/transport/ and one line in
+// render/light_transport_registry.cpp. It parses its own settings section of the scene
+// (render.light_transport.<name>), says which shared stages it needs before it runs (∇n, the
+// octree), writes its part of the view parameters, keys its cache on its own settings, and runs on
+// the CPU twin or on the GPU. The frame renderer reruns it only when its key changes; the view pass
+// never asks which method ran.
+//
+// The output contract (shaders/shared/view_march.h reads it):
+//  - lights lit straight (their bit clear in params.pipeline.z) come with a transmittance toward
+//    the light, from a per-light volume (texture unit 1 on the GPU, outputCpu().lightTransmittance
+//    on the CPU) or marched at each view sample (params.image.w == EK_SHADOWS_MARCHED);
+//  - lights lit through the fluence (bit set in pipeline.z, pipeline.y = 1) come summed in one
+//    fluence volume (rgb: Σ flux·length per voxel) and one mean-direction volume (xyz: the
+//    luminance-weighted sum of the directions light travels), units 4 and 5 on the GPU;
+//  - receivers read their irradiance map (SSBO binding 8) for the lights in the fluence.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "core/dense_grid.h"
+#include "core/scene.h"
+#include "render/refraction_volume.h"
+#include "render/view_params.h"
+
+namespace eikon {
+
+class GpuStageTimer;
+class VolumeTextures;
+
+// What a method reads besides the field volumes. The frame renderer computes these shared stages
+// before the method runs, and only when their own inputs changed.
+struct TransportNeeds {
+    bool gradient = false;  // the ∇n volume (xyz = ∇n, w = n)
+    bool octree = false;    // the octree over n (and over κ with octree.kappaTolerance > 0)
+    OctreeSettings octreeSettings;
+};
+
+// Counters of the last run, for --stats and tests; zero where a method has no such thing.
+struct TransportStats {
+    int64_t steps = 0;            // particle steps of the last run
+    int64_t particlesTraced = 0;  // particles (photons) that entered the volume
+    int64_t particlesCut = 0;     // particles cut before they finished (step cap, stop rule)
+    int rounds = 0;               // rounds of the march that had particles to march
+};
+
+// The output contract on the CPU: views into the method's own storage, valid until its next run.
+struct TransportOutputCpu {
+    std::vector<const glm::vec4*> lightTransmittance;  // per light lit straight; empty if none
+    const glm::vec4* fluence = nullptr;                // when pipeline.y is set
+    const glm::vec4* direction = nullptr;
+    const glm::vec4* receiverMap = nullptr;  // receiverMapTexels(params) texels
+    size_t fluenceVoxels = 0;                // voxels of fluence and direction
+    size_t receiverTexels = 0;               // texels of receiverMap
+};
+
+// Where and how a method's GPU run computes (chosen once per renderer).
+struct TransportDevice {
+    bool gpu = false;
+    bool hardwareTrilinear = false;  // the texture unit filters (shaders/shared/sampling.h)
+    bool exactMath = false;          // the CPU twin's rounding (bit-identical on llvmpipe)
+};
+
+// One frame's inputs to a CPU run.
+struct TransportInputsCpu {
+    const ViewSetup& setup;
+    const std::vector<const DenseGrid*>& slotGrids;
+    const RefractionVolumeCpu& gradient;  // empty unless needs().gradient
+    const RefractionVolumeCpu& octree;    // empty unless needs().octree
+    GpuStageTimer* timer;                 // the method times its own stages
+};
+
+// One frame's inputs to a GPU run: the field textures are uploaded, the params SSBO bound at
+// binding 0, and the ∇n and octree volumes computed when needs() asked for them.
+struct TransportInputsGpu {
+    const ViewSetup& setup;
+    VolumeTextures& fields;
+    const RefractionVolumesGpu& refraction;
+    GpuStageTimer* timer;
+};
+
+class LightTransport {
+public:
+    virtual ~LightTransport() = default;
+
+    // The registered name ("photons", "light_volumes").
+    virtual std::string name() const = 0;
+    // The shared stages the run reads.
+    virtual TransportNeeds needs() const = 0;
+    // Writes the method's part of the view parameters: params.pipeline.y and z (which lights come
+    // through the fluence), params.image.w and volumeMax.w (how transmittance is found); keeps
+    // what else of the scene its run reads (the seed).
+    virtual void configure(const Scene& scene, ViewSetup& setup) = 0;
+    // The bytes the output depends on, for the setup configure() wrote: equal keys, equal output,
+    // so the frame renderer skips the run. Empty when there is nothing to compute this frame
+    // (nothing scatters and no receiver shows the light, or light is marched at each sample).
+    virtual std::vector<unsigned char> cacheKey(
+        const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const = 0;
+
+    virtual void runCpu(const TransportInputsCpu& in) = 0;
+    virtual void runGpu(const TransportInputsGpu& in) = 0;
+    // The output of the last run (CPU runs; a GPU run's output stays on the GPU).
+    virtual TransportOutputCpu outputCpu() const = 0;
+    // Binds the output of the last GPU run to the contract's units and bindings.
+    virtual void bindGpu() const = 0;
+    virtual TransportStats stats() const = 0;
+};
+
+// Times one stage of a run, begin to end of scope (a null timer times nothing).
+class StageScope {
+public:
+    StageScope(GpuStageTimer* timer, const char* stage);
+    ~StageScope();
+    StageScope(const StageScope&) = delete;
+    StageScope& operator=(const StageScope&) = delete;
+
+private:
+    GpuStageTimer* timer_;
+};
+
+// The part of every method's key that any output depends on: the view parameters without the
+// camera, the image, the environment and the receivers' shading, and the versions of the field
+// grids. A method appends what else its output depends on (its settings, the receivers' maps).
+std::vector<unsigned char> transportInputsKey(const ViewSetup& setup,
+                                              const std::vector<const DenseGrid*>& slotGrids);
+
+}  // namespace eikon

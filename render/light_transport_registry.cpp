@@ -1,0 +1,104 @@
+#include "render/light_transport_registry.h"
+
+#include <glm/vector_relational.hpp>
+
+#include "render/transport/light_volumes/light_volume_transport.h"
+#include "render/transport/photons/photon_transport.h"
+
+namespace eikon {
+namespace {
+
+constexpr const char* kPointer = "/render/light_transport";
+
+template <class Method, class Settings>
+std::unique_ptr<LightTransport> make(Settings settings, const TransportDevice& device) {
+    return std::make_unique<Method>(settings, device);
+}
+
+// "auto": photons when light can bend on its way (some material has ior ≠ 1) and something
+// shows it (a material scatters it toward the camera, or a receiver); straight light volumes
+// otherwise, where they are exact and cheaper.
+std::string automaticMethod(const Scene& scene) {
+    bool refracts = false, scatters = false;
+    for (const MaterialSpec& mat : scene.materials) {
+        refracts = refracts || mat.ior != 1.0f;
+        scatters = scatters || glm::any(glm::greaterThan(mat.scattering, glm::vec3(0.0f)));
+    }
+    return refracts && (scatters || !scene.receivers.empty()) ? "photons" : "light_volumes";
+}
+
+json::Json parseSection(const Scene& scene) {
+    // Core wrote the section as compact JSON (core/scene.h), so it always parses.
+    return json::Json::parse(scene.render.lightTransport);
+}
+
+// Reads the section, checks every method's settings, and returns the chosen one.
+std::unique_ptr<LightTransport> readSection(const Scene& scene, const TransportDevice& device,
+                                            std::string* chosenName) {
+    const json::Json doc = parseSection(scene);
+    json::Object object(json::Value(doc, scene.path, kPointer), "the light transport settings");
+    std::vector<std::string> names = {"auto"};
+    for (const LightTransportMethod& m : lightTransportMethods()) names.push_back(m.name);
+    std::string method = "auto";
+    if (auto m = object.optional("method")) method = m->choice(names);
+    if (method == "auto") method = automaticMethod(scene);
+    std::unique_ptr<LightTransport> chosen;
+    for (const LightTransportMethod& m : lightTransportMethods()) {
+        const std::optional<json::Value> section = object.optional(m.name);
+        std::unique_ptr<LightTransport> made = m.make(section ? &*section : nullptr, device);
+        if (m.name == method) chosen = std::move(made);
+    }
+    object.finish();
+    if (chosenName) *chosenName = method;
+    return chosen;
+}
+
+}  // namespace
+
+const std::vector<LightTransportMethod>& lightTransportMethods() {
+    static const std::vector<LightTransportMethod> methods = {
+        {"photons",
+         "Sun et al. 2008: photons march the ray equation through the octree and deposit "
+         "fluence (curved light, volume and surface caustics)",
+         [](const json::Value* s, const TransportDevice& d) {
+             return make<PhotonTransport>(readPhotonTransportSettings(s), d);
+         }},
+        {"light_volumes",
+         "single scattering of straight light: a transmittance volume per light, swept or "
+         "marched, or marched at every view sample",
+         [](const json::Value* s, const TransportDevice& d) {
+             return make<LightVolumeTransport>(readLightVolumeSettings(s), d);
+         }},
+    };
+    return methods;
+}
+
+std::unique_ptr<LightTransport> makeLightTransport(const Scene& scene,
+                                                   const TransportDevice& device) {
+    return readSection(scene, device, nullptr);
+}
+
+void checkLightTransport(const Scene& scene) {
+    readSection(scene, TransportDevice{}, nullptr);
+}
+
+std::string lightTransportName(const Scene& scene) {
+    std::string name;
+    readSection(scene, TransportDevice{}, &name);
+    return name;
+}
+
+ViewSetup makeConfiguredViewSetup(const Scene& scene, const RenderVolume& volume,
+                                  const CameraFrame& camera, glm::ivec2 environmentSize) {
+    ViewSetup setup = makeViewSetup(scene, volume, camera, environmentSize);
+    makeLightTransport(scene, TransportDevice{})->configure(scene, setup);
+    return setup;
+}
+
+void patchLightTransport(Scene& scene, const std::string& jsonPatch) {
+    json::Json section = parseSection(scene);
+    section.merge_patch(json::Json::parse(jsonPatch));
+    scene.render.lightTransport = section.dump();
+}
+
+}  // namespace eikon

@@ -1,0 +1,145 @@
+#include "render/transport/photons/photon_transport.h"
+
+#include <glm/vector_relational.hpp>
+
+#include "render/input_key.h"
+#include "render/receiver_map.h"
+
+namespace eikon {
+namespace {
+
+using json::Object;
+using json::Range;
+
+// Photons per side beyond this would take minutes per light on a CPU and overflow int indices.
+constexpr std::int64_t kMaxPhotonsPerSide = 8192;
+// More steps per round than any step cap (16 crossings of an 8192-voxel box): one round.
+constexpr std::int64_t kMaxStepsPerRound = 1 << 20;
+
+bool sceneScatters(const Scene& scene) {
+    for (const MaterialSpec& mat : scene.materials)
+        if (glm::any(glm::greaterThan(mat.scattering, glm::vec3(0.0f)))) return true;
+    return false;
+}
+
+}  // namespace
+
+PhotonTransportSettings readPhotonTransportSettings(const json::Value* section) {
+    PhotonTransportSettings s;
+    if (!section) return s;
+    Object object(*section, "the photon settings");
+    if (auto side = object.optional("per_side"))
+        s.trace.photonsPerSide = static_cast<int>(side->integer(1, kMaxPhotonsPerSide));
+    if (auto step = object.optional("min_step_voxels"))
+        s.trace.minStepVoxels = step->floatNumber(Range::greaterThan(0.0));
+    if (auto threshold = object.optional("flux_threshold"))
+        s.trace.fluxThreshold = threshold->floatNumber(Range::closedOpen(0.0, 1.0));
+    if (auto fraction = object.optional("stop_fraction"))
+        s.trace.stopFraction = fraction->floatNumber(Range::closedOpen(0.0, 1.0));
+    if (auto steps = object.optional("steps_per_round"))
+        s.trace.stepsPerRound = static_cast<int>(steps->integer(1, kMaxStepsPerRound));
+    if (auto kappa = object.optional("kappa_tolerance"))
+        s.kappaTolerance = kappa->floatNumber(Range::atLeast(0.0));
+    object.finish();
+    return s;
+}
+
+PhotonTransport::PhotonTransport(PhotonTransportSettings settings, TransportDevice device)
+    : settings_(settings), device_(device) {}
+
+PhotonTransport::~PhotonTransport() = default;
+
+TransportNeeds PhotonTransport::needs() const {
+    // Photons march through the ∇n and octree volumes even where n ≡ 1 (their steps then grow
+    // to the octree's limit).
+    TransportNeeds n;
+    n.gradient = true;
+    n.octree = true;
+    n.octreeSettings.kappaTolerance = settings_.kappaTolerance;
+    return n;
+}
+
+void PhotonTransport::configure(const Scene& scene, ViewSetup& setup) {
+    seed_ = scene.render.seed;
+    // Photons matter where something scatters them toward the camera, or a receiver shows them.
+    if (!sceneScatters(scene) && scene.receivers.empty()) return;
+    shared::GpuViewParams& p = setup.params;
+    // Every light type emits photons (shaders/shared/photons.h).
+    for (size_t l = 0; l < scene.lights.size(); ++l) p.pipeline.z |= 1 << l;
+    p.pipeline.y = p.pipeline.z != 0 ? 1 : 0;
+}
+
+PhotonSettings PhotonTransport::traceSettings() const {
+    PhotonSettings s = settings_.trace;
+    s.seed = seed_;
+    s.frame = 0;  // the same jitter every frame
+    return s;
+}
+
+std::vector<unsigned char> PhotonTransport::cacheKey(
+    const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const {
+    const shared::GpuViewParams& p = setup.params;
+    if (p.pipeline.y == 0) return {};
+    std::vector<unsigned char> key = transportInputsKey(setup, slotGrids);
+    // Photons stop on receivers and fill their maps.
+    for (int r = 0; r < p.pipeline.w; ++r) {
+        appendBytes(key, &p.receivers[r].plane, sizeof(glm::vec4));
+        appendBytes(key, &p.receivers[r].texels, sizeof(glm::ivec4));
+    }
+    // Every member is 4 bytes: the struct has no padding to carry stale bytes into the key.
+    static_assert(sizeof(PhotonSettings) == 8 * 4, "PhotonSettings gained padding or a member");
+    const PhotonSettings trace = traceSettings();
+    appendBytes(key, &trace, sizeof(trace));
+    appendBytes(key, &settings_.kappaTolerance, sizeof(settings_.kappaTolerance));
+    return key;
+}
+
+void PhotonTransport::runCpu(const TransportInputsCpu& in) {
+    StageScope stage(in.timer, "photons");
+    cpu_ =
+        computePhotonRadianceCpu(in.setup, in.slotGrids, in.gradient, in.octree, traceSettings());
+}
+
+void PhotonTransport::runGpu(const TransportInputsGpu& in) {
+    if (!gpu_) gpu_ = std::make_unique<PhotonRadianceGpu>(device_.exactMath);
+    gpu_->compute(in.setup, in.fields, in.refraction, traceSettings(), in.timer);
+}
+
+TransportOutputCpu PhotonTransport::outputCpu() const {
+    TransportOutputCpu out;
+    if (cpu_.radiance.empty()) return out;
+    out.fluence = cpu_.radiance.data();
+    out.direction = cpu_.direction.data();
+    out.fluenceVoxels = cpu_.radiance.size();
+    out.receiverMap = cpu_.receiverMap.data();
+    out.receiverTexels = cpu_.receiverMap.size();
+    return out;
+}
+
+void PhotonTransport::bindGpu() const {
+    if (gpu_) gpu_->bind();
+}
+
+TransportStats PhotonTransport::stats() const {
+    TransportStats s;
+    if (device_.gpu) {
+        if (!gpu_) return s;
+        s.steps = gpu_->lastSteps();
+        s.particlesTraced = gpu_->lastPhotonsTraced();
+        s.particlesCut = gpu_->lastPhotonsCut();
+        s.rounds = gpu_->lastRounds();
+        return s;
+    }
+    s.steps = cpu_.steps;
+    s.particlesTraced = cpu_.photonsTraced;
+    s.particlesCut = cpu_.photonsCut;
+    s.rounds = cpu_.rounds;
+    return s;
+}
+
+PhotonRadianceCpu PhotonTransport::volumes() const {
+    if (device_.gpu) return gpu_ ? gpu_->download() : PhotonRadianceCpu{};
+    return cpu_;
+}
+
+}  // namespace eikon
