@@ -12,6 +12,7 @@ PACKAGES=(
     nlohmann-json3-dev libcli11-dev libpng-dev libopenexr-dev
     catch2
     python3-matplotlib  # scripts/plot_advection_bench.py (run with /usr/bin/python3)
+    clang-format  # scripts/check-format.sh
 )
 
 missing=()

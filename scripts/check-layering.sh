@@ -1,0 +1,164 @@
+#!/usr/bin/env bash
+# Fails when an #include or a CMake link goes against the library direction, so that the layering
+# is enforced, not just intended. One folder is one library:
+#
+#   core            math, fields, scenes; no GL, no simulation
+#   sim             simulations, on core
+#   render          GL, on core; loads the GLSL in shaders/
+#   apps            the command line; may use every library
+#   shaders/shared  the math compiled both as GLSL and as C++; includes no other project folder,
+#                   so core may include it without pulling in GL (core/mesh_voxelize.cpp does: the
+#                   CPU voxelizer runs the very code of the voxelize shaders)
+#   shaders         GLSL programs; include only shaders/
+#
+# sim and render never include each other. tests/ may include anything and is not scanned;
+# neither is shaders/test/ (fixtures of the shader loader's own tests, some broken on purpose).
+# A library may use what lies below it, so sim may include shaders/shared as core does.
+#
+# GL: <epoxy/...>, <EGL/...>, <GL/...>, <GLFW/...> are forbidden in core, sim and shaders/shared,
+# and core/sim CMakeLists may neither find nor link OpenGL, EGL, epoxy or GLFW. apps may: the
+# viewer's window is render's GlfwWindowContext, but its event loop (apps/cmd_view.cpp) polls GLFW
+# for keys and the mouse, and `eikon bench voxelize` reads a GL texture back, and apps is the top
+# layer. The root CMakeLists.txt finds those packages once for both render and apps (imported
+# targets are visible only below the folder that found them), so it is not checked.
+#
+# Usage: scripts/check-layering.sh [ROOT]   (ROOT defaults to this repository)
+set -euo pipefail
+ROOT="${1:-$(dirname "$0")/..}"
+cd "$ROOT"
+
+declare -A MAY_INCLUDE=(
+    [core]="core shaders/shared"
+    [sim]="sim core shaders/shared"
+    [render]="render core shaders/shared shaders"
+    [apps]="apps render sim core shaders/shared shaders"
+    [shaders/shared]="shaders/shared"
+    [shaders]="shaders shaders/shared"
+)
+GL_HEADER='^(epoxy|EGL|GL|GLES[0-9]*|GLFW|KHR)/'
+violations=0
+
+# Sets `lib` to the library that owns a repository-relative path, or empty outside the project.
+library_of() {
+    case "$1" in
+        shaders/test/*) lib=tests ;;
+        shaders/shared/*) lib=shaders/shared ;;
+        shaders/*) lib=shaders ;;
+        core/* | sim/* | render/* | apps/* | tests/*) lib="${1%%/*}" ;;
+        *) lib="" ;;
+    esac
+}
+
+# Sets `norm` to a path with its "." and ".." segments folded (no file needs to exist).
+normalize() {
+    local IFS=/ part parts out=()
+    read -ra parts <<<"$1"
+    for part in "${parts[@]}"; do
+        case "$part" in
+            '' | .) ;;
+            ..) # folds the segment before it, unless that is a ".." too
+                if ((${#out[@]})) && [ "${out[-1]}" != .. ]; then
+                    unset 'out[-1]'
+                else
+                    out+=(..)
+                fi
+                ;;
+            *) out+=("$part") ;;
+        esac
+    done
+    norm="${out[*]}"
+}
+
+violation() {
+    echo "eikon: $*" >&2
+    violations=$((violations + 1))
+}
+
+# ---- includes -------------------------------------------------------------------------------
+mapfile -t files < <(
+    find core sim render apps -type f \( -name '*.h' -o -name '*.hpp' -o -name '*.cpp' \)
+    find shaders -path shaders/test -prune -o -type f \
+        \( -name '*.h' -o -name '*.comp' -o -name '*.glsl' -o -name '*.vert' -o -name '*.frag' \) \
+        -print
+)
+# grep with no file names would read stdin and wait.
+if ((${#files[@]} == 0)); then
+    echo "eikon: no sources in core sim render apps shaders under $(pwd)" >&2
+    exit 1
+fi
+include_re='^[[:space:]]*#[[:space:]]*include[[:space:]]*([<"])([^>"]+)[>"]'
+while IFS= read -r hit; do
+    file="${hit%%:*}" rest="${hit#*:}"
+    line="${rest%%:*}" text="${rest#*:}"
+    [[ "$text" =~ $include_re ]] || continue
+    quote="${BASH_REMATCH[1]}" name="${BASH_REMATCH[2]}"
+    library_of "$file"
+    owner="$lib"
+    if [ "$quote" = "<" ]; then
+        # System headers are fine, except the GL ones below render.
+        if [[ "$owner" =~ ^(core|sim|shaders/shared)$ && "$name" =~ $GL_HEADER ]]; then
+            violation "$file:$line: $owner must not include <$name> ($owner may include:" \
+                "${MAY_INCLUDE[$owner]}; GL headers only in render and apps)"
+        fi
+        continue
+    fi
+    # Resolved as the compilers do: beside the including file first, else from the include root
+    # (the repository for C++, shaders/ for GLSL; render/shader_program.cpp resolves that way).
+    root=.
+    [[ "$file" =~ \.(comp|glsl|vert|frag)$ ]] && root=shaders
+    beside="${file%/*}/$name"
+    if [ -f "$beside" ]; then normalize "$beside"; else normalize "$root/$name"; fi
+    library_of "$norm"
+    [ -n "$lib" ] || continue # outside the project's folders: a third-party header
+    if [[ " ${MAY_INCLUDE[$owner]} " != *" $lib "* ]]; then
+        violation "$file:$line: $owner must not include $norm" \
+            "($owner may include: ${MAY_INCLUDE[$owner]})"
+    fi
+done < <(grep -nHE '^[[:space:]]*#[[:space:]]*include' "${files[@]}")
+
+# ---- CMake link graph -----------------------------------------------------------------------
+declare -A MUST_NOT_LINK=(
+    [core]='^(eikon_sim|eikon_render)$|epoxy|egl|opengl|glfw|glew'
+    [sim]='^eikon_render$|epoxy|egl|opengl|glfw|glew'
+    [render]='^eikon_sim$'
+)
+declare -A MAY_LINK=(
+    [core]="no other eikon library, no OpenGL/EGL/epoxy/GLFW"
+    [sim]="eikon_core, no OpenGL/EGL/epoxy/GLFW"
+    [render]="eikon_core, OpenGL/EGL/epoxy/GLFW"
+)
+for owner in core sim render; do
+    cmake_file="$owner/CMakeLists.txt"
+    [ -f "$cmake_file" ] || continue
+    # Each find/link command as "line<TAB>arguments", joined over its continuation lines.
+    while IFS=$'\t' read -r line command args; do
+        read -ra items <<<"$args"
+        # target_link_libraries' first argument is the target itself, not something it links.
+        [ "$command" = target_link_libraries ] && items=("${items[@]:1}")
+        for item in "${items[@]}"; do
+            if [[ "${item,,}" =~ ${MUST_NOT_LINK[$owner]} ]]; then
+                verb="find"
+                [ "$command" = target_link_libraries ] && verb="link"
+                violation "$cmake_file:$line: $owner must not $verb $item" \
+                    "($owner may link: ${MAY_LINK[$owner]})"
+                break # one line per command is enough
+            fi
+        done
+    done < <(awk '
+        { sub(/#.*/, "") } # comments
+        !open && match(tolower($0), /^[ \t]*(target_link_libraries|find_package|pkg_[a-z_]+) *\(/) {
+            open = 1; start = NR; text = ""
+            command = tolower($0); sub(/^[ \t]*/, "", command); sub(/[ \t]*\(.*/, "", command)
+            sub(/^[^(]*\(/, "")
+        }
+        open {
+            text = text " " $0
+            if (index($0, ")")) {
+                sub(/\).*/, "", text); gsub(/[ \t]+/, " ", text)
+                print start "\t" command "\t" text; open = 0
+            }
+        }' "$cmake_file")
+done
+
+((violations == 0)) || exit 1
+echo "layering: ${#files[@]} files, no include crosses the library direction"
