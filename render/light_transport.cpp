@@ -15,6 +15,18 @@ StageScope::~StageScope() {
     if (timer_) timer_->end();
 }
 
+bool viewReadsLightTransmittance(const ViewSetup& setup) {
+    const shared::GpuViewParams& p = setup.params;
+    if (p.image.z == 0 || p.image.w == EK_SHADOWS_MARCHED) return false;
+    if (p.pipeline.z == (1 << p.image.z) - 1) return false;  // every light comes in the fluence
+    if (p.pipeline.w > 0) return true;                       // receivers are lit through them
+    for (int m = 0; m < p.resolution.w; ++m) {
+        const glm::vec4& s = p.materials[m].scattering;
+        if (s.x > 0.0f || s.y > 0.0f || s.z > 0.0f) return true;
+    }
+    return false;
+}
+
 std::vector<unsigned char> transportInputsKey(const ViewSetup& setup,
                                               const std::vector<const DenseGrid*>& slotGrids) {
     shared::GpuViewParams p = setup.params;

@@ -113,6 +113,10 @@ public:
     virtual TransportStats stats() const = 0;
 };
 
+// Whether the viewing pass reads a per-light transmittance volume: some light lit straight, some
+// scattering material or receiver, and shadows from volumes (not marched at each sample).
+bool viewReadsLightTransmittance(const ViewSetup& setup);
+
 // Times one stage of a run, begin to end of scope (a null timer times nothing).
 class StageScope {
 public:

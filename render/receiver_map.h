@@ -2,8 +2,8 @@
 // The receiver map: the irradiance photons bring to each plane receiver (shaders/shared/
 // receivers.h), texel by texel, every receiver's texels one after the other. Photon tracing sums
 // the flux landing on each texel as int64 fixed point (3 per texel: r, g, b, at the totals' scale
-// 2^40 / Φ_c of render/photon_tracing.h); this turns the sums into irradiance, the same on both
-// backends.
+// 2^40 / Φ_c of render/transport/photons/photon_tracing.h); this turns the sums into irradiance,
+// the same on both backends.
 #include <cstdint>
 #include <vector>
 

@@ -2,7 +2,6 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
-#include "render/light_volume.h"
 #include "render/receiver_map.h"
 #include "render/view_pass.h"
 #include "render/volume_kernels_cpu.h"
@@ -17,7 +16,7 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
         throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
                                            " field grids, got " + std::to_string(slotGrids.size()));
     shared::ViewKernelCpu kernel{{p}};
-    if (viewNeedsLightVolumes(setup) && int(light.lightTransmittance.size()) != p.image.z)
+    if (viewReadsLightTransmittance(setup) && int(light.lightTransmittance.size()) != p.image.z)
         throw Error("view pass (CPU)", "the light volumes were not computed");
     for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
         kernel.lights[l] = light.lightTransmittance[l];

@@ -1,6 +1,6 @@
 #version 430 core
 // Transmittance toward a point or spot light, marched from every voxel centre
-// (render/light_volume_gpu.cpp).
+// (render/transport/light_volumes/light_volume_gpu.cpp).
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "volume_bindings.glsl"

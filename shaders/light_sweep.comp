@@ -1,5 +1,5 @@
 #version 430 core
-// One slice of the sweep for a directional light (render/light_volume_gpu.cpp): the host
+// One slice of the sweep for a directional light (render/transport/light_volumes/light_volume_gpu.cpp): the host
 // dispatches the slices in the light's order with an image barrier between them.
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -1,5 +1,5 @@
 #version 430 core
-// Turns the photon pass's fixed-point deposits into float volumes (render/photon_radiance_gpu.cpp)
+// Turns the photon pass's fixed-point deposits into float volumes (render/transport/photons/photon_radiance_gpu.cpp)
 // the way the CPU twin does: value = float(double(q) / scale), q the int64 sum. double(q) is
 // built from its (low, high) words as high·2^32 + low: both terms are exact doubles, so their sum
 // rounds once, like the CPU's int64 → double conversion.

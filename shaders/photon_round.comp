@@ -1,5 +1,5 @@
 #version 430 core
-// Between two rounds of the photon march (render/photon_tracing_gpu.cpp), one invocation: the
+// Between two rounds of the photon march (render/transport/photons/photon_tracing_gpu.cpp), one invocation: the
 // photons the last round appended become the next round's dispatch arguments, the stop rule is
 // checked, and the list the last round read is emptied for the round after to append to. All on
 // the GPU: the host issues the rounds without reading any count back.
@@ -17,7 +17,7 @@ void main() {
     const uint next = rounds[EK_ROUND_COUNT + 1 - listIn];
     if (done > 0u) rounds[EK_ROUND_MARCHED] += 1u;
     rounds[EK_ROUND_COUNT + listIn] = 0u;
-    // The CPU twin's rule (render/photon_tracing_cpu.cpp): a round that cut appended nothing, so
+    // The CPU twin's rule (render/transport/photons/photon_tracing_cpu.cpp): a round that cut appended nothing, so
     // the flag clears itself after one round.
     rounds[EK_ROUND_STOP] = (next > 0u && next < stopCount) ? 1u : 0u;
     const uint groups = (next + uint(EK_ROUND_GROUP) - 1u) / uint(EK_ROUND_GROUP);

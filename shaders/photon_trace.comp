@@ -1,10 +1,10 @@
 #version 430 core
 // Photon tracing, steps 4 and 5 of Sun et al. 2008 (shaders/shared/photons.h), one invocation
-// per photon (render/photon_tracing_gpu.cpp). Compiled twice:
+// per photon (render/transport/photons/photon_tracing_gpu.cpp). Compiled twice:
 //  - with EK_PHOTON_GENERATE: generates one light's photons, in the layout the host chose
 //    (photonGrid, run once in the CPU twin's planPhotons), and writes their starting states.
 //    The host sums their flux to set the fixed-point scales before anything is deposited,
-//    exactly as the CPU twin (render/photon_tracing_cpu.cpp) does;
+//    exactly as the CPU twin (render/transport/photons/photon_tracing_cpu.cpp) does;
 //  - without: one round of the march (shared/photon_rounds.h): marches each photon of the round
 //    by up to roundSteps steps, depositing every segment piece into the fixed-point radiance
 //    volume; appends the photons still active to the next round's list, and adds the bookkeeping
@@ -159,7 +159,7 @@ uniform uint seed;
 uniform uint frame;
 uniform float fluxThreshold;
 uniform float minStep;
-uniform int roundSteps;   // steps of this round (render/photon_tracing.h photonRoundSteps)
+uniform int roundSteps;   // steps of this round (render/transport/photons/photon_tracing.h photonRoundSteps)
 uniform bool lastRound;   // the step cap: photons still active after this round are cut
 uniform bool fromList;    // false: round 0, photons[photonFirst ..]; true: list listIn
 uniform int listIn;       // the list this round reads (0 or 1); it appends to the other

@@ -12,7 +12,7 @@ layout(std430, binding = 0) readonly buffer ViewParamsBlock { GpuViewParams para
 layout(binding = 0) uniform sampler3D fieldTex;  // R32F, EK_MAX_MATERIALS slots at most
 layout(binding = 1) uniform sampler3D lightTex;  // RGBA32F, one volume per light
 layout(binding = 2) uniform sampler3D gradientTex;  // RGBA32F: xyz = ∇n, w = n (curved rays)
-// Unit 3 is the photon pass's octree. The smoothed photon volumes (render/photon_radiance.h):
+// Unit 3 is the photon pass's octree. The smoothed photon volumes (render/transport/photons/photon_radiance.h):
 layout(binding = 4) uniform sampler3D photonRadianceTex;   // RGBA32F: rgb = Σ flux·length
 layout(binding = 5) uniform sampler3D photonDirectionTex;  // RGBA32F: xyz = Σ weighted direction
 // The equirectangular environment image (RGBA32F), when params.environment.x asks for it.

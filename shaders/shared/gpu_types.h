@@ -31,8 +31,9 @@ EK_NAMESPACE_BEGIN
 
 // fetchVolume slots after the fields (0..) and the light volumes: the ∇n volume (xyz = ∇n, w = n).
 #define EK_GRADIENT_SLOT (EK_MAX_MATERIALS + EK_MAX_LIGHTS)
-// The smoothed photon volumes (render/photon_radiance.h): rgb = Σ flux·length per voxel (power ×
-// scene units), and xyz = the luminance-weighted sum of the directions the light travels.
+// The smoothed photon volumes (render/transport/photons/photon_radiance.h): rgb = Σ flux·length per
+// voxel (power × scene units), and xyz = the luminance-weighted sum of the directions the light
+// travels.
 #define EK_PHOTON_RADIANCE_SLOT (EK_GRADIENT_SLOT + 1)
 #define EK_PHOTON_DIRECTION_SLOT (EK_GRADIENT_SLOT + 2)
 

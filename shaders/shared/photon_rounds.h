@@ -1,9 +1,9 @@
-// The photon march's round buffer (render/photon_tracing_gpu.cpp, shaders/photon_trace.comp,
-// shaders/photon_round.comp): one array of uint words, a header and then two lists of photon
-// indices, each as long as the photon list. Round r marches the photons of list r & 1 (round 0:
-// every photon, by a direct dispatch) and appends those still active to the other list; between
-// rounds photon_round.comp turns the new count into the next round's dispatch arguments, so the
-// host never needs the count. Word offsets, the same for C++ and GLSL.
+// The photon march's round buffer (render/transport/photons/photon_tracing_gpu.cpp,
+// shaders/photon_trace.comp, shaders/photon_round.comp): one array of uint words, a header and then
+// two lists of photon indices, each as long as the photon list. Round r marches the photons of list
+// r & 1 (round 0: every photon, by a direct dispatch) and appends those still active to the other
+// list; between rounds photon_round.comp turns the new count into the next round's dispatch
+// arguments, so the host never needs the count. Word offsets, the same for C++ and GLSL.
 #ifndef EIKON_SHARED_PHOTON_ROUNDS_H
 #define EIKON_SHARED_PHOTON_ROUNDS_H
 

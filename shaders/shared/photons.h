@@ -1,5 +1,5 @@
 // Photon tracing, steps 4 and 5 of Sun et al. 2008 (docs/METHODS.md §1), the same on the GPU and
-// in the CPU twin (render/photon_tracing_cpu.cpp).
+// in the CPU twin (render/transport/photons/photon_tracing_cpu.cpp).
 //
 // Two parts. The GpuPhoton struct sits under its own include guard, so that C++ can include this
 // file once at namespace scope with EK_PHOTON_TYPES_ONLY defined (for the struct alone) and again
@@ -462,7 +462,8 @@ int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, EK_INOUT(vec3) extingu
 // receiver or is dropped; the state is written to position.w (still EK_PHOTON_ACTIVE if it took
 // all of them). Everything the march needs lives in the photon itself (position, v and the step
 // count, flux and its threshold) and in `extinguished`, so a march split into rounds of
-// marchPhoton takes exactly the steps of one uninterrupted march (render/photon_tracing.h).
+// marchPhoton takes exactly the steps of one uninterrupted march
+// (render/transport/photons/photon_tracing.h).
 void marchPhoton(EK_INOUT(GpuPhoton) photon, float minStep, int steps,
                  EK_INOUT(vec3) extinguished) {
     int state = int(photon.position.w);

@@ -1,7 +1,7 @@
-// Photon lighting end to end through FrameRenderer (render/photon_radiance.h): the viewing pass
-// reading the smoothed photon volumes instead of light volumes. A closed form (single scattering
-// in a slab), GPU = CPU twin for the volumes and the image, which stages rerun on which change,
-// and which scenes need no photons at all.
+// Photon lighting end to end through FrameRenderer (render/transport/photons/photon_radiance.h):
+// the viewing pass reading the smoothed photon volumes instead of light volumes. A closed form
+// (single scattering in a slab), GPU = CPU twin for the volumes and the image, which stages rerun
+// on which change, and which scenes need no photons at all.
 #include <catch2/catch.hpp>
 
 #include <algorithm>

@@ -1,8 +1,8 @@
 // The photon march in rounds with the active photons compacted between them, and the stop rule
-// (render/photon_tracing.h PhotonSettings::stepsPerRound, stopFraction), on the CPU twin and on
-// the GPU (shaders/photon_trace.comp, photon_round.comp): the round size alone changes nothing,
-// so compaction loses and duplicates no photon; the stop rule cuts only the last few photons,
-// keeps the energy balance, and the GPU cuts exactly the twin's.
+// (render/transport/photons/photon_tracing.h PhotonSettings::stepsPerRound, stopFraction), on the
+// CPU twin and on the GPU (shaders/photon_trace.comp, photon_round.comp): the round size alone
+// changes nothing, so compaction loses and duplicates no photon; the stop rule cuts only the last
+// few photons, keeps the energy balance, and the GPU cuts exactly the twin's.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -14,9 +14,9 @@
 
 #include "core/camera.h"
 #include "render/gl_context.h"
-#include "render/photon_tracing.h"
 #include "render/refraction_volume.h"
 #include "render/shader_program.h"
+#include "render/transport/photons/photon_tracing.h"
 #include "render/volume_kernels_cpu.h"
 #include "support/linear_n2_medium.h"
 #include "support/photon_scene.h"

@@ -8,8 +8,8 @@
 #include <cstring>
 
 #include "render/params_buffer.h"
-#include "render/photon_tracing_gpu.h"
 #include "render/refraction_volume.h"
+#include "render/transport/photons/photon_tracing_gpu.h"
 #include "render/volume_textures.h"
 #include "support/photon_scene.h"
 

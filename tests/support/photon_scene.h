@@ -6,8 +6,8 @@
 
 #include "core/camera.h"
 #include "core/scene.h"
-#include "render/photon_tracing.h"
 #include "render/refraction_volume.h"
+#include "render/transport/photons/photon_tracing.h"
 #include "render/view_params.h"
 
 namespace eikon::test {

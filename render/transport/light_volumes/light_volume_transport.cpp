@@ -46,7 +46,7 @@ void LightVolumeTransport::configure(const Scene&, ViewSetup& setup) {
 
 std::vector<unsigned char> LightVolumeTransport::cacheKey(
     const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const {
-    if (!viewNeedsLightVolumes(setup)) return {};
+    if (!viewReadsLightTransmittance(setup)) return {};
     return transportInputsKey(setup, slotGrids);
 }
 

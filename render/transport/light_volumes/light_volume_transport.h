@@ -1,17 +1,17 @@
 #pragma once
 // Light transport method "light_volumes": single scattering of straight light. Each light's
 // transmittance exp(−∫κ) toward the light is computed once per change of lights or extinction in
-// a volume at the render resolution (render/light_volume.h), marched from every voxel centre or,
-// for directional lights, swept slice by slice; or, as the reference, marched toward the light
-// from every view sample (like OpenVDB's vdb_render), with no volume at all. Exact and cheap,
-// but blind to refraction: light does not bend on its way in.
+// a volume at the render resolution (render/transport/light_volumes/light_volume.h), marched from
+// every voxel centre or, for directional lights, swept slice by slice; or, as the reference,
+// marched toward the light from every view sample (like OpenVDB's vdb_render), with no volume at
+// all. Exact and cheap, but blind to refraction: light does not bend on its way in.
 //
 // Settings: render.light_transport.light_volumes (docs/scene-format.md).
 #include <memory>
 
 #include "core/json_reader.h"
 #include "render/light_transport.h"
-#include "render/light_volume.h"
+#include "render/transport/light_volumes/light_volume.h"
 
 namespace eikon {
 

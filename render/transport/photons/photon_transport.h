@@ -3,14 +3,15 @@
 // light march the ray equation through the ∇n volume with steps the octree allows, deposit
 // Σ flux·length and their luminance-weighted directions into fixed-point volumes, which are
 // smoothed into the output contract's fluence and mean-direction volumes
-// (render/photon_radiance.h); photons crossing a plane receiver fill its irradiance map.
+// (render/transport/photons/photon_radiance.h); photons crossing a plane receiver fill its
+// irradiance map.
 //
 // Settings: render.light_transport.photons (docs/scene-format.md#renderlight_transportphotons).
 #include <memory>
 
 #include "core/json_reader.h"
 #include "render/light_transport.h"
-#include "render/photon_radiance.h"
+#include "render/transport/photons/photon_radiance.h"
 
 namespace eikon {
 

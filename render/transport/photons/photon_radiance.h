@@ -1,7 +1,7 @@
 #pragma once
 // The photon radiance stage (Sun et al. 2008 steps 4-6): photons traced from the lights along
-// curved paths (render/photon_tracing.h), their fixed-point deposits turned into float volumes,
-// both smoothed (render/smoothing.h). The viewing pass reads the result through
+// curved paths (render/transport/photons/photon_tracing.h), their fixed-point deposits turned into
+// float volumes, both smoothed (render/smoothing.h). The viewing pass reads the result through
 // EK_PHOTON_RADIANCE_SLOT and EK_PHOTON_DIRECTION_SLOT (shaders/shared/view_march.h).
 //
 // The light-transport method "photons" (render/transport/photons/) runs it; the frame renderer
@@ -15,8 +15,8 @@
 
 #include "core/dense_grid.h"
 #include "core/scene.h"
-#include "render/photon_tracing.h"
 #include "render/refraction_volume.h"
+#include "render/transport/photons/photon_tracing.h"
 #include "render/view_params.h"
 
 namespace eikon {

@@ -1,10 +1,11 @@
 #pragma once
-// Photon tracing on the GPU (shaders/photon_trace.comp): the port of render/photon_tracing.h's
-// CPU twin, running the same shared functions and the same fixed-point sums, so that download()
-// returns the CPU twin's PhotonResultCpu for the same inputs.
+// Photon tracing on the GPU (shaders/photon_trace.comp): the port of
+// render/transport/photons/photon_tracing.h's CPU twin, running the same shared functions and the
+// same fixed-point sums, so that download() returns the CPU twin's PhotonResultCpu for the same
+// inputs.
 #include <memory>
 
-#include "render/photon_tracing.h"
+#include "render/transport/photons/photon_tracing.h"
 
 namespace eikon {
 
@@ -45,9 +46,9 @@ public:
     int rounds() const;
     // Photons of the last trace that entered the box (known on the host: no read-back).
     int64_t photonsTraced() const { return host_.photonsTraced; }
-    // For the passes that read the deposits on the GPU (render/photon_radiance_gpu.cpp): the
-    // SSBO (6 int64 per voxel as (low, high) words, see shaders/photon_trace.comp) and its
-    // fixed-point scales.
+    // For the passes that read the deposits on the GPU
+    // (render/transport/photons/photon_radiance_gpu.cpp): the SSBO (6 int64 per voxel as (low,
+    // high) words, see shaders/photon_trace.comp) and its fixed-point scales.
     unsigned depositBuffer() const { return deposits_; }
     const glm::dvec4& fixedPointScale() const { return host_.fixedPointScale; }
 

@@ -4,10 +4,10 @@
 
 #include "core/error.h"
 #include "render/gpu_timer.h"
-#include "render/photon_radiance.h"
-#include "render/photon_tracing_gpu.h"
 #include "render/shader_program.h"
 #include "render/smoothing.h"
+#include "render/transport/photons/photon_radiance.h"
+#include "render/transport/photons/photon_tracing_gpu.h"
 #include "render/volume_textures.h"
 
 namespace eikon {

@@ -1,5 +1,5 @@
-#include "render/photon_radiance.h"
 #include "render/smoothing.h"
+#include "render/transport/photons/photon_radiance.h"
 
 namespace eikon {
 

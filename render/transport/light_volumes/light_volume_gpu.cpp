@@ -2,8 +2,8 @@
 
 #include "core/error.h"
 #include "render/gpu_timer.h"
-#include "render/light_volume.h"
 #include "render/shader_program.h"
+#include "render/transport/light_volumes/light_volume.h"
 #include "render/volume_kernels_cpu.h"
 #include "render/volume_textures.h"
 

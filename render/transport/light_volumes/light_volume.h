@@ -17,10 +17,6 @@ class GpuStageTimer;
 class ShaderProgram;
 class VolumeTextures;
 
-// Whether the viewing pass will read light volumes: some light, some scattering material, and
-// shadows from volumes (not marched per sample).
-bool viewNeedsLightVolumes(const ViewSetup& setup);
-
 // Whether light l reaches the medium through the photon volumes (params.pipeline.z): its light
 // volume is then neither computed nor read.
 inline bool lightComesAsPhotons(const shared::GpuViewParams& p, int l) {

@@ -8,8 +8,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "render/photon_tracing.h"
 #include "render/receiver_map.h"
+#include "render/transport/photons/photon_tracing.h"
 #include "render/volume_kernels_cpu.h"
 
 EK_NAMESPACE_BEGIN
@@ -60,7 +60,8 @@ namespace eikon {
 
 namespace {
 
-constexpr double kFixedPointRange = 1099511627776.0;  // 2^40, see render/photon_tracing.h
+constexpr double kFixedPointRange =
+    1099511627776.0;  // 2^40, see render/transport/photons/photon_tracing.h
 
 double luminance(glm::dvec3 c) {
     return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;

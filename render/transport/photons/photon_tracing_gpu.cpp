@@ -7,9 +7,9 @@
 
 #include "core/error.h"
 #include "render/gpu_timer.h"
-#include "render/photon_tracing_gpu.h"
 #include "render/receiver_map.h"
 #include "render/shader_program.h"
+#include "render/transport/photons/photon_tracing_gpu.h"
 #include "render/volume_kernels_cpu.h"
 #include "render/volume_textures.h"
 #include "shaders/shared/photon_rounds.h"
@@ -33,7 +33,8 @@ constexpr int kDepositChannels = 6;  // r, g, b, weighted direction x, y, z
 // escaped rgb, extinguished rgb, dropped rgb, steps, cut, received rgb
 constexpr int kTotalsCount = 14;
 
-constexpr double kFixedPointRange = 1099511627776.0;  // 2^40, see render/photon_tracing.h
+constexpr double kFixedPointRange =
+    1099511627776.0;  // 2^40, see render/transport/photons/photon_tracing.h
 
 double luminance(glm::dvec3 c) {
     return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
