@@ -11,6 +11,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     addBenchAdvectionCommand(*bench, exitCode);
     addBenchVoxelizeCommand(*bench, exitCode);
     addBenchArapCommand(*bench, exitCode);
+    addBenchMethodsCommand(*bench, exitCode);
 }
 
 }  // namespace eikon::app

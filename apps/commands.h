@@ -17,5 +17,6 @@ void addBenchSmokeCommand(CLI::App& bench, int& exitCode);
 void addBenchAdvectionCommand(CLI::App& bench, int& exitCode);
 void addBenchVoxelizeCommand(CLI::App& bench, int& exitCode);
 void addBenchArapCommand(CLI::App& bench, int& exitCode);
+void addBenchMethodsCommand(CLI::App& bench, int& exitCode);
 
 }  // namespace eikon::app

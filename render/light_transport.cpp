@@ -2,8 +2,10 @@
 
 #include <cstring>
 
+#include "core/error.h"
 #include "render/gpu_timer.h"
 #include "render/input_key.h"
+#include "render/volume_kernels_cpu.h"
 
 namespace eikon {
 
@@ -25,6 +27,38 @@ bool viewReadsLightTransmittance(const ViewSetup& setup) {
         if (s.x > 0.0f || s.y > 0.0f || s.z > 0.0f) return true;
     }
     return false;
+}
+
+std::vector<glm::vec3> fluenceRateCpu(const ViewSetup& setup, const TransportOutputCpu& out) {
+    const shared::GpuViewParams& p = setup.params;
+    const RenderVolume volume{{glm::vec3(p.volumeMin), glm::vec3(p.volumeMax)},
+                              glm::ivec3(p.resolution.x, p.resolution.y, p.resolution.z)};
+    const size_t voxels = volume.voxelCount();
+    std::vector<glm::vec3> rate(voxels, glm::vec3(0.0f));
+    if (p.pipeline.y != 0) {
+        if (!out.fluence || out.fluenceVoxels != voxels)
+            throw Error("fluence rate", "the method gave no fluence volume");
+        const glm::vec3 h = volume.voxelSize();
+        for (size_t v = 0; v < voxels; ++v) rate[v] = glm::vec3(out.fluence[v]) / (h.x * h.y * h.z);
+    }
+    shared::VolumeAccessCpu kernel{p};  // the shared lightIrradiance, as the view uses it
+    for (int l = 0; l < p.image.z; ++l) {
+        if ((p.pipeline.z & (1 << l)) != 0) continue;  // in the fluence
+        if (p.image.w == EK_SHADOWS_MARCHED || size_t(l) >= out.lightTransmittance.size())
+            throw Error("fluence rate", "light " + std::to_string(l) +
+                                            " has no transmittance volume (marched at view time)");
+        size_t v = 0;
+        for (int k = 0; k < volume.resolution.z; ++k)
+            for (int j = 0; j < volume.resolution.y; ++j)
+                for (int i = 0; i < volume.resolution.x; ++i, ++v) {
+                    glm::vec3 toLight;
+                    float distance;
+                    const glm::vec3 e =
+                        kernel.lightIrradiance(l, volume.voxelCenter(i, j, k), toLight, distance);
+                    rate[v] += e * glm::vec3(out.lightTransmittance[size_t(l)][v]);
+                }
+    }
+    return rate;
 }
 
 std::vector<unsigned char> transportInputsKey(const ViewSetup& setup,

@@ -20,9 +20,11 @@
 //  - receivers read their irradiance map (SSBO binding 8) for the lights in the fluence.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "core/dense_grid.h"
@@ -49,6 +51,17 @@ struct TransportStats {
     int64_t particlesTraced = 0;  // particles (photons) that entered the volume
     int64_t particlesCut = 0;     // particles cut before they finished (step cap, stop rule)
     int rounds = 0;               // rounds of the march that had particles to march
+};
+
+// Where the light of the last run went, per colour channel in power, for methods that account
+// for it (photons do; light volumes store transmittance only). Balanced when emitted equals the
+// sum of the others.
+struct EnergyBalance {
+    glm::dvec3 emitted{0.0};       // entered the volume
+    glm::dvec3 extinguished{0.0};  // absorbed or scattered out on the way
+    glm::dvec3 escaped{0.0};       // left through the volume's faces
+    glm::dvec3 dropped{0.0};       // in particles removed below a threshold or cut
+    glm::dvec3 received{0.0};      // stopped on a receiver
 };
 
 // The output contract on the CPU: views into the method's own storage, valid until its next run.
@@ -111,7 +124,18 @@ public:
     // Binds the output of the last GPU run to the contract's units and bindings.
     virtual void bindGpu() const = 0;
     virtual TransportStats stats() const = 0;
+    // The timer stages its runs report (GpuStageTimer names), for benches that time a method.
+    virtual std::vector<std::string> stages() const = 0;
+    // The last run's energy accounting; none for a method that keeps none.
+    virtual std::optional<EnergyBalance> energy() const { return std::nullopt; }
 };
+
+// The fluence rate (rgb, power per area) at every voxel centre, x fastest, that the output
+// contract of a CPU run describes: the fluence volume / voxel volume for the lights in it, plus,
+// for each light lit straight, its unshadowed irradiance times the transmittance volume. Throws
+// eikon::Error when a straight light's transmittance is marched at view time (no volume to read).
+// What `eikon bench methods` measures every method by.
+std::vector<glm::vec3> fluenceRateCpu(const ViewSetup& setup, const TransportOutputCpu& out);
 
 // Whether the viewing pass reads a per-light transmittance volume: some light lit straight, some
 // scattering material or receiver, and shadows from volumes (not marched at each sample).

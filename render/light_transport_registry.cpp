@@ -62,13 +62,19 @@ const std::vector<LightTransportMethod>& lightTransportMethods() {
          "fluence (curved light, volume and surface caustics)",
          [](const json::Value* s, const TransportDevice& d) {
              return make<PhotonTransport>(readPhotonTransportSettings(s), d);
-         }},
+         },
+         {{"coarse", R"({"per_side": 64})"},
+          {"default", "{}"},
+          {"fine", R"({"per_side": 256, "min_step_voxels": 0.5})"}}},
         {"light_volumes",
          "single scattering of straight light: a transmittance volume per light, swept or "
          "marched, or marched at every view sample",
          [](const json::Value* s, const TransportDevice& d) {
              return make<LightVolumeTransport>(readLightVolumeSettings(s), d);
-         }},
+         },
+         {{"coarse", R"({"shadows": "volume", "shadow_step_voxels": 6})"},
+          {"default", "{}"},
+          {"fine", R"({"shadows": "volume", "shadow_step_voxels": 1})"}}},
     };
     return methods;
 }

@@ -9,6 +9,7 @@
 // line in lightTransportMethods() (docs/architecture.md walks through it).
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/json_reader.h"
@@ -24,6 +25,9 @@ struct LightTransportMethod {
     // makes the method for `device`. Throws eikon::Error at the offending key.
     std::unique_ptr<LightTransport> (*make)(const json::Value* section,
                                             const TransportDevice& device);
+    // Named settings `eikon bench methods` runs ("coarse", "default", "fine"): the method's
+    // settings section as JSON, from cheap and rough to slow and accurate.
+    std::vector<std::pair<std::string, std::string>> benchSettings;
 };
 
 // Every registered method, in the order docs and benches list them.

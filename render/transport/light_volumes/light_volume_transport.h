@@ -43,6 +43,7 @@ public:
     TransportOutputCpu outputCpu() const override;
     void bindGpu() const override;
     TransportStats stats() const override { return {}; }
+    std::vector<std::string> stages() const override { return {"light"}; }
 
     // Light l's volume of the last GPU run, read back (tests compare it with the CPU twin).
     LightVolumeCpu downloadGpu(int light) const;

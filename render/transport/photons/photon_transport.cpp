@@ -137,6 +137,11 @@ TransportStats PhotonTransport::stats() const {
     return s;
 }
 
+std::optional<EnergyBalance> PhotonTransport::energy() const {
+    const PhotonTotals t = volumes().totals;  // a GPU run's: read back (benches and tests only)
+    return EnergyBalance{t.emitted, t.extinguished, t.escaped, t.dropped, t.received};
+}
+
 PhotonRadianceCpu PhotonTransport::volumes() const {
     if (device_.gpu) return gpu_ ? gpu_->download() : PhotonRadianceCpu{};
     return cpu_;

@@ -42,6 +42,8 @@ public:
     TransportOutputCpu outputCpu() const override;
     void bindGpu() const override;
     TransportStats stats() const override;
+    std::vector<std::string> stages() const override { return {"photons", "smooth"}; }
+    std::optional<EnergyBalance> energy() const override;
 
     // The trace's settings with the scene's seed. The jitter depends on the seed, not on the
     // frame: a light and medium that stay still keep their photons, so noise does not flicker in

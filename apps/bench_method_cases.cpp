@@ -1,0 +1,302 @@
+#include "apps/bench_method_cases.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "core/error.h"
+
+namespace eikon::app {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Every case lives in the box [-1, 1]³.
+const Bounds3 kBox{glm::vec3(-1.0f), glm::vec3(1.0f)};
+// A faint fog everywhere, so that something scatters light toward a camera and every method
+// computes its light (photons are traced only where something shows them), without dimming the
+// beam measurably (1e-3 per unit: 0.2 % across the box).
+constexpr float kFaintScattering = 1e-3f;
+
+using FieldFunction = std::function<float(glm::vec3)>;
+
+DenseGrid gridOf(const std::string& name, const RenderVolume& volume, const FieldFunction& f) {
+    DenseGrid g;
+    g.field = name;
+    g.volume = volume;
+    g.version = 1;
+    g.values.resize(volume.voxelCount());
+    for (int k = 0; k < volume.resolution.z; ++k)
+        for (int j = 0; j < volume.resolution.y; ++j)
+            for (int i = 0; i < volume.resolution.x; ++i)
+                g.values[g.index(i, j, k)] = f(volume.voxelCenter(i, j, k));
+    return g;
+}
+
+MaterialSpec material(const std::string& name, const std::string& field, float ior,
+                      glm::vec3 absorption, glm::vec3 scattering) {
+    MaterialSpec m;
+    m.name = name;
+    m.field = field;
+    m.ior = ior;
+    m.absorption = absorption;
+    m.scattering = scattering;
+    return m;
+}
+
+LightSpec directionalDown() {
+    LightSpec l;
+    l.type = LightType::Directional;
+    l.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    return l;
+}
+
+// A narrow beam down the y axis: a spot light `distance` above `target` whose cone is
+// `beamRadius` wide at the target, with a soft edge of 5 % of the cone.
+LightSpec beamDown(glm::vec3 target, float distance, float beamRadius) {
+    LightSpec l;
+    l.type = LightType::Spot;
+    l.position = target + glm::vec3(0.0f, distance, 0.0f);
+    l.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    l.coneAngleDeg = glm::degrees(std::atan(beamRadius / distance));
+    l.coneSoftnessDeg = 0.05f * l.coneAngleDeg;
+    return l;
+}
+
+// A case over the box at `n` voxels per edge with a faint fog ("density" = 1) added.
+MethodCase boxCase(const std::string& name, int n) {
+    MethodCase c;
+    c.name = name;
+    c.volume = RenderVolume{kBox, glm::ivec3(n)};
+    c.scene.render.width = c.scene.render.height = 4;
+    return c;
+}
+
+void addFog(MethodCase& c, glm::vec3 absorption, glm::vec3 scattering) {
+    c.scene.materials.push_back(material("fog", "density", 1.0f, absorption, scattering));
+    c.fields["density"] = gridOf("density", c.volume, [](glm::vec3) { return 1.0f; });
+}
+
+void addIndexField(MethodCase& c, float ior, const FieldFunction& f) {
+    c.scene.materials.push_back(material("glass", "n", ior, glm::vec3(0.0f), glm::vec3(0.0f)));
+    c.fields["n"] = gridOf("n", c.volume, f);
+}
+
+size_t voxelIndex(const RenderVolume& v, int i, int j, int k) {
+    return (size_t(k) * size_t(v.resolution.y) + size_t(j)) * size_t(v.resolution.x) + size_t(i);
+}
+
+// The green fluence rate along the column x = z = 0 (the resolution is odd: a voxel column).
+std::function<double(int)> axisProfile(const CaseOutput& out) {
+    const int c = out.volume.resolution.x / 2;
+    return [&out, c](int j) { return double(out.fluenceRate[voxelIndex(out.volume, c, j, c)].g); };
+}
+
+// The centre, in samples, of the run of samples within `fraction` of the maximum of at(i) over
+// [lo, hi] (a focus is a plateau several voxels long whose single highest sample is noise), its
+// ends interpolated; NaN when the run touches the range's ends (no focus inside it).
+double plateauCentre(const std::function<double(int)>& at, int lo, int hi, double fraction) {
+    int best = lo;
+    for (int i = lo; i <= hi; ++i)
+        if (at(i) > at(best)) best = i;
+    if (!(at(best) > 0.0)) return kNaN;
+    const double level = (1.0 - fraction) * at(best);
+    int left = best, right = best;
+    while (left > lo && at(left - 1) >= level) --left;
+    while (right < hi && at(right + 1) >= level) ++right;
+    if (left == lo || right == hi) return kNaN;
+    const double l = double(left) - (at(left) - level) / (at(left) - at(left - 1));
+    const double r = double(right) + (at(right) - level) / (at(right) - at(right + 1));
+    return 0.5 * (l + r);
+}
+
+// Beer–Lambert: a homogeneous slab of extinction 4 per unit filling the box, a directional light
+// straight down; the fluence rate at depth d is E e^(−κ d). Error: the largest relative error
+// down the centre column where the optical depth is between 0.1 and 8.
+MethodCase slabCase(int n) {
+    MethodCase c = boxCase("slab", n);
+    constexpr float kKappa = 4.0f;
+    c.closedForm = "fluence E exp(-kappa d), optical depth 0.1 to 8";
+    c.errorUnit = "relative";
+    addFog(c, glm::vec3(kKappa - 0.04f), glm::vec3(0.04f));
+    c.scene.lights.push_back(directionalDown());
+    c.error = [](const CaseOutput& out) {
+        const auto at = axisProfile(out);
+        const double h = double(out.volume.voxelSize().y);
+        double worst = 0.0;
+        for (int j = 0; j < out.volume.resolution.y; ++j) {
+            const double depth = 1.0 - (-1.0 + (j + 0.5) * h);
+            const double tau = double(kKappa) * depth;
+            if (tau < 0.1 || tau > 8.0) continue;
+            worst = std::max(worst, std::abs(at(j) / std::exp(-tau) - 1.0));
+        }
+        return worst;
+    };
+    return c;
+}
+
+// A glass ball (n = 1.5, R = 0.6, its rim smoothed over two voxels) under a narrow paraxial
+// beam from a source 40 units above: the focus lies 1 / (1/f − 1/D) below its centre, with
+// f = nR / (2(n − 1)) the ball lens's focal length. Error in voxels; NaN: no focus.
+MethodCase ballLensCase(int n) {
+    MethodCase c = boxCase("ball_lens", n);
+    constexpr float kIor = 1.5f, kRadius = 0.6f, kDistance = 40.0f;
+    const glm::vec3 centre(0.0f, 0.3f, 0.0f);
+    const float rim = 2.0f * 2.0f / float(n);
+    c.closedForm = "paraxial focus 1/(1/f - 1/D) below the centre, f = nR/(2(n-1))";
+    c.errorUnit = "voxels";
+    addFog(c, glm::vec3(0.0f), glm::vec3(kFaintScattering));
+    addIndexField(c, kIor, [=](glm::vec3 x) {
+        return std::clamp(0.5f - (glm::length(x - centre) - kRadius) / rim, 0.0f, 1.0f);
+    });
+    c.scene.lights.push_back(beamDown(centre, kDistance, kRadius / 5.0f));
+    c.error = [=](const CaseOutput& out) {
+        const double h = double(out.volume.voxelSize().y);
+        const double f = double(kIor) * kRadius / (2.0 * (double(kIor) - 1.0));
+        const double expected = 1.0 / (1.0 / f - 1.0 / double(kDistance));
+        // From the first voxel below the rim down to the box.
+        const int top = int(std::floor((centre.y - kRadius - rim + 1.0f) / h)) - 1;
+        const double peak = plateauCentre(axisProfile(out), 1, top, 0.005);
+        const double distance = double(centre.y) - (-1.0 + (peak + 0.5) * h);
+        return std::abs(distance - expected) / h;
+    };
+    return c;
+}
+
+// A Luneburg lens, n = sqrt(2 − (r/R)²): a parallel beam focuses on its far surface, R below
+// the centre. Error in voxels; NaN: no focus.
+MethodCase luneburgCase(int n) {
+    MethodCase c = boxCase("luneburg", n);
+    constexpr float kRadius = 0.6f;
+    const glm::vec3 centre(0.0f, 0.3f, 0.0f);
+    c.closedForm = "a parallel beam focuses on the far surface, R below the centre";
+    c.errorUnit = "voxels";
+    addFog(c, glm::vec3(0.0f), glm::vec3(kFaintScattering));
+    addIndexField(c, 2.0f, [=](glm::vec3 x) {
+        const float r = glm::length(x - centre) / kRadius;
+        return r < 1.0f ? std::sqrt(2.0f - r * r) - 1.0f : 0.0f;
+    });
+    c.scene.lights.push_back(directionalDown());
+    c.error = [=](const CaseOutput& out) {
+        const double h = double(out.volume.voxelSize().y);
+        const int middle = int(std::floor((centre.y + 1.0f) / h));
+        const double peak = plateauCentre(axisProfile(out), 1, middle, 0.005);
+        const double distance = double(centre.y) - (-1.0 + (peak + 0.5) * h);
+        return std::abs(distance - double(kRadius)) / h;
+    };
+    return c;
+}
+
+// n² linear across the beam, n² = 1.44 + 0.3 (x + 1): a narrow beam sent straight down bends
+// toward +x along the parabola x = x0 + p0 τ + (∇n²/4) τ² (dτ = ds/n). Error: the fluence
+// centroid on the bottom layer against the power-weighted mean of the closed-form exit points
+// of the beam's rays, in voxels.
+MethodCase linearN2Case(int n) {
+    MethodCase c = boxCase("linear_n2", n);
+    constexpr double kN0 = 1.2, kAlpha = 0.3;
+    constexpr float kDistance = 40.0f, kBeam = 0.1f;
+    auto index = [=](double x) { return std::sqrt(kN0 * kN0 + kAlpha * (x + 1.0)); };
+    c.closedForm = "exit point on the parabola x0 + p0 t + (grad n^2/4) t^2";
+    c.errorUnit = "voxels";
+    addFog(c, glm::vec3(0.0f), glm::vec3(kFaintScattering));
+    addIndexField(c, 2.0f, [=](glm::vec3 x) { return float(index(double(x.x))) - 1.0f; });
+    c.scene.lights.push_back(beamDown(glm::vec3(0.0f, 1.0f, 0.0f), kDistance, kBeam));
+    c.error = [=](const CaseOutput& out) {
+        const RenderVolume& v = out.volume;
+        const double h = double(v.voxelSize().y);
+        const double yBottom = -1.0 + 0.5 * h;  // the bottom layer's centres
+        // The rays through a grid over the beam's disk at the top face, from the source.
+        const glm::dvec3 source(0.0, 1.0 + double(kDistance), 0.0);
+        double sum = 0.0;
+        int rays = 0;
+        for (int a = -20; a <= 20; ++a)
+            for (int b = -20; b <= 20; ++b) {
+                const glm::dvec3 x0(kBeam * a / 20.0, 1.0, kBeam * b / 20.0);
+                if (x0.x * x0.x + x0.z * x0.z > double(kBeam) * kBeam) continue;
+                const glm::dvec3 p0 = index(x0.x) * glm::normalize(x0 - source);
+                const double tau = (yBottom - 1.0) / p0.y;  // p_y is constant: ∇n² ⟂ y
+                sum += x0.x + p0.x * tau + kAlpha / 4.0 * tau * tau;
+                ++rays;
+            }
+        const double expected = sum / rays;
+        double weight = 0.0, moment = 0.0;
+        for (int k = 0; k < v.resolution.z; ++k)
+            for (int i = 0; i < v.resolution.x; ++i) {
+                const double phi = double(out.fluenceRate[voxelIndex(v, i, 0, k)].g);
+                weight += phi;
+                moment += phi * double(v.voxelCenter(i, 0, k).x);
+            }
+        if (!(weight > 0.0)) return kNaN;
+        return std::abs(moment / weight - expected) / h;
+    };
+    return c;
+}
+
+// A glass ball in absorbing, scattering fog under a spot light: every bit of power that enters
+// must be extinguished, escape, be dropped or land on a receiver. Error: the largest relative
+// imbalance of the three channels; NaN for a method that keeps no energy account.
+MethodCase energyCase(int n) {
+    MethodCase c = boxCase("energy", n);
+    c.closedForm = "emitted = extinguished + escaped + dropped + received, per channel";
+    c.errorUnit = "relative";
+    addFog(c, glm::vec3(0.2f, 0.25f, 0.3f), glm::vec3(1.6f, 1.5f, 1.4f));
+    const float rim = 2.0f * 2.0f / float(n);
+    addIndexField(c, 1.5f, [=](glm::vec3 x) {
+        return std::clamp(0.5f - (glm::length(x) - 0.45f) / rim, 0.0f, 1.0f);
+    });
+    LightSpec spot;
+    spot.type = LightType::Spot;
+    spot.position = glm::vec3(0.8f, 3.0f, 0.5f);
+    spot.direction = glm::normalize(-spot.position);
+    spot.intensity = 20.0f;
+    spot.coneAngleDeg = 20.0f;
+    c.scene.lights.push_back(spot);
+    c.error = [](const CaseOutput& out) {
+        if (!out.energy) return kNaN;
+        const EnergyBalance& e = *out.energy;
+        const glm::dvec3 rest = e.extinguished + e.escaped + e.dropped + e.received;
+        double worst = 0.0;
+        for (int ch = 0; ch < 3; ++ch)
+            worst = std::max(worst, std::abs(e.emitted[ch] - rest[ch]) / e.emitted[ch]);
+        return worst;
+    };
+    return c;
+}
+
+using CaseMaker = MethodCase (*)(int);
+struct NamedCase {
+    const char* name;
+    CaseMaker make;
+};
+const NamedCase kCases[] = {{"slab", slabCase},
+                            {"ball_lens", ballLensCase},
+                            {"luneburg", luneburgCase},
+                            {"linear_n2", linearN2Case},
+                            {"energy", energyCase}};
+
+}  // namespace
+
+std::vector<std::string> methodCaseNames() {
+    std::vector<std::string> names;
+    for (const NamedCase& c : kCases) names.push_back(c.name);
+    return names;
+}
+
+std::vector<MethodCase> methodCases(int resolution, const std::vector<std::string>& only) {
+    for (const std::string& name : only) {
+        const std::vector<std::string> all = methodCaseNames();
+        if (std::find(all.begin(), all.end(), name) == all.end())
+            throw Error("--cases", "no case '" + name + "' (slab, ball_lens, luneburg, " +
+                                       "linear_n2, energy)");
+    }
+    const int odd = resolution | 1;
+    std::vector<MethodCase> cases;
+    for (const NamedCase& c : kCases)
+        if (only.empty() || std::find(only.begin(), only.end(), c.name) != only.end())
+            cases.push_back(c.make(odd));
+    return cases;
+}
+
+}  // namespace eikon::app
