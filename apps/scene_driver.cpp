@@ -18,20 +18,8 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
             options.closeHolesUpTo = std::size_t(spec.closeHolesUpTo);
             local = loadRefractiveMesh(spec.file, options).mesh;
         }
-        Simulated s;
-        s.mesh = m;
-        if (spec.shape == MeshShapeType::Water) {
-            s.water =
-                std::make_unique<sim::WaterSurface>(sim::waterSettings(spec.water, scene.time.fps));
-        } else if (spec.jelly) {
-            // The jelly lives in the world, starting where the mesh is placed.
-            s.jelly = std::make_unique<sim::Jelly>(placeMesh(local, spec),
-                                                   sim::jellySettings(*spec.jelly, scene.time.fps));
-        } else if (spec.arap) {
-            // Dragged in object space: the placement still applies (and may be animated).
-            s.arap = std::make_unique<sim::ArapDrag>(local, *spec.arap,
-                                                     scene.path + ":" + spec.jsonPath);
-            s.dragOffsets.assign(spec.arap->handles.size(), glm::vec3(0.0f));
+        if (std::unique_ptr<sim::MovingMesh> moving = sim::makeMovingMesh(scene, m, local)) {
+            moving_.push_back({std::move(moving)});
         } else if (spec.shape == MeshShapeType::File) {
             fixedMeshes_.emplace_back(m, std::move(local));
         } else if (spec.shape == MeshShapeType::Liquid) {
@@ -43,7 +31,6 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
             fixedMeshes_.emplace_back(
                 m, fillContainer(containerMesh, spec.fill, scene.path + ":" + spec.jsonPath).mesh);
         }
-        if (s.water || s.jelly || s.arap) simulated_.push_back(std::move(s));
     }
     for (const SourceSpec& source : scene.sources)
         if (source.type == SourceType::Simulation && !smokeScene_)
@@ -77,68 +64,57 @@ void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
     }
     if (!animation_.empty()) animation_.apply(clock_.timeOfFrame(frame), renderer.scene());
     if (smokeScene_) stepSmoke(renderer, frame);
-    for (Simulated& s : simulated_) {
-        if (s.frameSet == frame) continue;
-        if (s.water) {
-            s.water->advanceToFrame(frame);
-            renderer.setMesh(s.mesh, s.water->mesh());
-        } else if (s.jelly) {
-            s.jelly->advanceToFrame(frame);
-            renderer.setMesh(s.mesh, unplaceMesh(s.jelly->mesh(), renderer.scene().meshes[s.mesh]));
-        } else {
-            // Frames before this one need their own handle positions: the tracks evaluated on a
-            // copy of the scene at each frame's time.
-            const Scene& now = renderer.scene();
-            s.arap->advanceToFrame(frame, [&](int k) {
-                if (k == frame || animation_.empty()) return withDrags(now, s);
-                Scene then = now;
-                animation_.apply(clock_.timeOfFrame(k), then);
-                return withDrags(then, s);
-            });
-            renderer.setMesh(s.mesh, s.arap->mesh());
-        }
-        s.frameSet = frame;
+    const Scene& now = renderer.scene();
+    // An earlier frame's scene, for deformers solved frame by frame from their start; none is
+    // needed when no track moves anything.
+    sim::SceneAtFrame earlier;
+    if (!animation_.empty())
+        earlier = [&](int k) {
+            Scene then = now;
+            animation_.apply(clock_.timeOfFrame(k), then);
+            return then;
+        };
+    for (Moving& m : moving_) {
+        if (m.frameSet == frame) continue;
+        m.mesh->advanceToFrame(frame, now, earlier);
+        renderer.setMesh(m.mesh->meshIndex(), m.mesh->objectSpaceMesh(now));
+        m.frameSet = frame;
     }
 }
 
-ArapSpec SceneDriver::withDrags(const Scene& scene, const Simulated& s) {
-    ArapSpec spec = *scene.meshes[s.mesh].arap;
-    for (size_t j = 0; j < spec.handles.size() && j < s.dragOffsets.size(); ++j)
-        spec.handles[j].translation += s.dragOffsets[j];
-    return spec;
-}
-
-SceneDriver::Simulated& SceneDriver::arapOf(size_t mesh) {
-    for (Simulated& s : simulated_)
-        if (s.arap && s.mesh == mesh) return s;
+sim::ArapMovingMesh& SceneDriver::arapOf(size_t mesh) {
+    for (Moving& m : moving_)
+        if (auto* arap = dynamic_cast<sim::ArapMovingMesh*>(m.mesh.get()))
+            if (arap->meshIndex() == mesh) return *arap;
     throw Error("mesh " + std::to_string(mesh), "has no ARAP deformer to drag");
 }
 
 std::vector<SceneDriver::HandleRef> SceneDriver::arapHandles() const {
     std::vector<HandleRef> handles;
-    for (const Simulated& s : simulated_)
-        if (s.arap)
-            for (size_t j = 0; j < s.dragOffsets.size(); ++j) handles.push_back({s.mesh, j});
+    for (const Moving& m : moving_)
+        if (const auto* arap = dynamic_cast<const sim::ArapMovingMesh*>(m.mesh.get()))
+            for (size_t j = 0; j < arap->handleCount(); ++j)
+                handles.push_back({arap->meshIndex(), j});
     return handles;
 }
 
 glm::vec3 SceneDriver::handleCentre(const FrameRenderer& renderer, HandleRef h) const {
-    const Simulated& s = arapOf(h.mesh);
-    const std::vector<std::uint32_t>& vertices = s.arap->handleVertices()[h.handle];
+    const sim::ArapDrag& arap = arapOf(h.mesh).deformer();
+    const std::vector<std::uint32_t>& vertices = arap.handleVertices()[h.handle];
     glm::vec3 sum(0.0f);
-    for (std::uint32_t v : vertices) sum += s.arap->positions()[v];
+    for (std::uint32_t v : vertices) sum += arap.positions()[v];
     return placePoint(sum / float(vertices.size()), placementOf(renderer.scene(), h.mesh));
 }
 
 void SceneDriver::dragHandle(FrameRenderer& renderer, HandleRef h, glm::vec3 worldMotion) {
-    Simulated& s = arapOf(h.mesh);
-    s.dragOffsets[h.handle] += unplaceMotion(worldMotion, placementOf(renderer.scene(), h.mesh));
-    s.arap->dragCurrentFrame(withDrags(renderer.scene(), s));
-    renderer.setMesh(s.mesh, s.arap->mesh());
+    sim::ArapMovingMesh& arap = arapOf(h.mesh);
+    arap.drag(h.handle, unplaceMotion(worldMotion, placementOf(renderer.scene(), h.mesh)),
+              renderer.scene());
+    renderer.setMesh(h.mesh, arap.objectSpaceMesh(renderer.scene()));
 }
 
 glm::vec3 SceneDriver::handleTranslation(const FrameRenderer& renderer, HandleRef h) const {
-    return withDrags(renderer.scene(), arapOf(h.mesh)).handles[h.handle].translation;
+    return arapOf(h.mesh).withDrags(renderer.scene()).handles[h.handle].translation;
 }
 
 }  // namespace eikon::app

@@ -14,11 +14,9 @@
 
 #include "render/frame_renderer.h"
 #include "sim/animation.h"
-#include "sim/arap_drag.h"
 #include "sim/clock.h"
-#include "sim/jelly.h"
+#include "sim/moving_mesh.h"
 #include "sim/smoke_solver.h"
-#include "sim/water_surface.h"
 
 namespace eikon::app {
 
@@ -51,23 +49,18 @@ public:
 private:
     sim::SceneAnimation animation_;
     SimulationClock clock_;
-    // A simulated mesh: only a new frame changes it, so a camera move on the same frame
-    // re-voxelizes nothing.
-    struct Simulated {
-        size_t mesh = 0;
-        std::unique_ptr<sim::WaterSurface> water;
-        std::unique_ptr<sim::Jelly> jelly;
-        std::unique_ptr<sim::ArapDrag> arap;
-        std::vector<glm::vec3> dragOffsets;  // ARAP: per handle, object space, from the user
-        int frameSet = -1;                   // the frame whose mesh the renderer has
+    // The meshes something moves (sim/moving_mesh.h): only a new frame changes one, so a camera
+    // move on the same frame re-voxelizes nothing.
+    struct Moving {
+        std::unique_ptr<sim::MovingMesh> mesh;
+        int frameSet = -1;  // the frame whose mesh the renderer has
     };
-    std::vector<Simulated> simulated_;
-    Simulated& arapOf(size_t mesh);  // throws unless mesh `mesh` has an ARAP deformer
-    const Simulated& arapOf(size_t mesh) const {
+    std::vector<Moving> moving_;
+    // Throws unless mesh `mesh` has an ARAP deformer.
+    sim::ArapMovingMesh& arapOf(size_t mesh);
+    const sim::ArapMovingMesh& arapOf(size_t mesh) const {
         return const_cast<SceneDriver*>(this)->arapOf(mesh);
     }
-    // The deformer's spec in `scene` (the tracks applied) with the user's drags added.
-    static ArapSpec withDrags(const Scene& scene, const Simulated& s);
     // The scene's smoke, stepped live when a source of type "simulation" shows it: frame f holds
     // the state after f − frame_start + 1 frames, as in `eikon simulate`'s cache.
     void stepSmoke(FrameRenderer& renderer, int frame);
