@@ -4,8 +4,6 @@
 #include "core/mesh_placement.h"
 #include "sim/container_fill.h"
 #include "sim/refractive_mesh.h"
-#include "sim/smoke_from_scene.h"
-#include "sim/smoke_publish.h"
 
 namespace eikon::app {
 
@@ -32,29 +30,7 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
                 m, fillContainer(containerMesh, spec.fill, scene.path + ":" + spec.jsonPath).mesh);
         }
     }
-    for (const SourceSpec& source : scene.sources)
-        if (source.type == SourceType::Simulation && !smokeScene_)
-            smokeScene_ = std::make_unique<Scene>(scene);
-}
-
-void SceneDriver::stepSmoke(FrameRenderer& renderer, int frame) {
-    const Scene& scene = *smokeScene_;
-    const int first = scene.time.frameStart;
-    if (frame < first)
-        throw Error(scene.path + ":/time/frame_start",
-                    "the simulation starts at frame " + std::to_string(first) + "; frame " +
-                        std::to_string(frame) + " comes before it");
-    if (smoke_ && smokeFrame_ == frame) return;
-    if (!smoke_ || frame < smokeFrame_) {
-        smoke_ = std::make_unique<sim::SmokeSolver>(sim::smokeSolverFrom(scene));
-        smokeFrame_ = first - 1;
-    }
-    while (smokeFrame_ < frame) {
-        smoke_->advanceFrame();
-        ++smokeFrame_;
-    }
-    sim::publishSmoke(smoke_->grid(), renderer.publishedFields(),
-                      scene.path + ": simulation frame " + std::to_string(frame));
+    fieldSimulations_ = sim::makeFieldSimulations(scene);
 }
 
 void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
@@ -63,7 +39,11 @@ void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
         fixedMeshesSet_ = true;
     }
     if (!animation_.empty()) animation_.apply(clock_.timeOfFrame(frame), renderer.scene());
-    if (smokeScene_) stepSmoke(renderer, frame);
+    for (const auto& simulation : fieldSimulations_)
+        if (simulation->advanceToFrame(frame))
+            simulation->publish(
+                renderer.publishedFields(),
+                renderer.scene().path + ": simulation frame " + std::to_string(frame));
     const Scene& now = renderer.scene();
     // An earlier frame's scene, for deformers solved frame by frame from their start; none is
     // needed when no track moves anything.

@@ -7,7 +7,8 @@
 // frame is the same however it is reached. Mesh files are read once, here (sim/refractive_mesh.h:
 // holes closed as the scene asks, then checked closed), since the renderer cannot read them, and
 // liquids are made once from their containers (sim/container_fill.h). A scene whose source is its
-// own smoke simulation has it stepped here and published to the renderer every new frame.
+// own smoke simulation has it stepped here and published to the renderer every new frame
+// (sim/field_simulation.h); moving meshes are sim/moving_mesh.h's.
 #include <memory>
 #include <utility>
 #include <vector>
@@ -15,8 +16,8 @@
 #include "render/frame_renderer.h"
 #include "sim/animation.h"
 #include "sim/clock.h"
+#include "sim/field_simulation.h"
 #include "sim/moving_mesh.h"
-#include "sim/smoke_solver.h"
 
 namespace eikon::app {
 
@@ -61,12 +62,8 @@ private:
     const sim::ArapMovingMesh& arapOf(size_t mesh) const {
         return const_cast<SceneDriver*>(this)->arapOf(mesh);
     }
-    // The scene's smoke, stepped live when a source of type "simulation" shows it: frame f holds
-    // the state after f − frame_start + 1 frames, as in `eikon simulate`'s cache.
-    void stepSmoke(FrameRenderer& renderer, int frame);
-    std::unique_ptr<Scene> smokeScene_;  // as loaded: the solver is rebuilt from it on going back
-    std::unique_ptr<sim::SmokeSolver> smoke_;
-    int smokeFrame_ = 0;  // the frame the solver's state is, once smoke_ exists
+    // The simulations whose fields the scene shows live (sim/field_simulation.h).
+    std::vector<std::unique_ptr<sim::FieldSimulation>> fieldSimulations_;
     // Meshes made here that no simulation moves (read from files, liquids filling their
     // containers): handed to the renderer once.
     std::vector<std::pair<size_t, TriangleMesh>> fixedMeshes_;

@@ -1,0 +1,32 @@
+#pragma once
+// A simulation that writes fields the renderer reads (the scene's smoke: density, temperature,
+// velocity): one interface, so that the scene driver (apps/scene_driver.h) holds a list of them
+// built by one factory. Stepped live, frame by frame, when a source of type "simulation" shows
+// it; frame f holds the state after f − frame_start + 1 frames, as in `eikon simulate`'s cache.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+
+namespace eikon {
+class FieldRegistry;
+}
+
+namespace eikon::sim {
+
+class FieldSimulation {
+public:
+    virtual ~FieldSimulation() = default;
+    // Brings the simulation to `frame`: forward from where it is, or from its start when the
+    // frame lies behind. Returns whether its state changed (a frame already reached: no). Throws
+    // eikon::Error for a frame before its start.
+    virtual bool advanceToFrame(int frame) = 0;
+    // Stores the fields it writes in `fields` as new versions; `origin` names them in messages.
+    virtual void publish(FieldRegistry& fields, const std::string& origin) const = 0;
+};
+
+// The simulations the scene's sources show live (type "simulation"); none otherwise.
+std::vector<std::unique_ptr<FieldSimulation>> makeFieldSimulations(const Scene& scene);
+
+}  // namespace eikon::sim
