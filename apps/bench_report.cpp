@@ -91,6 +91,15 @@ std::unique_ptr<tbb::global_control> limitThreads(int threads) {
                                                  std::size_t(threads));
 }
 
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ','))
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
 std::vector<int> parseSizeList(const std::string& text, const char* option) {
     std::vector<int> values;
     std::stringstream in(text);

@@ -25,6 +25,9 @@ std::unique_ptr<tbb::global_control> limitThreads(int threads);
 // The median of the values (the mean of the middle two for an even count); 0 for none.
 double median(std::vector<double> values);
 
+// "a,b,,c" -> {"a", "b", "c"}: comma-separated names, empty items dropped.
+std::vector<std::string> splitList(const std::string& text);
+
 // "16,32" -> {16, 32}. Throws eikon::Error naming `option` on anything else.
 std::vector<int> parseSizeList(const std::string& text, const char* option);
 

@@ -44,15 +44,6 @@ struct BenchMethodsOptions {
     std::string tsv = "out/bench/methods.tsv";
 };
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ','))
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
-
 struct Measurement {
     bool active = false;  // false: the method computes nothing for this scene
     double ms = 0.0;      // median

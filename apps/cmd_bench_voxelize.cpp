@@ -71,15 +71,6 @@ NamedMesh parseMesh(const std::string& spec) {
                 "unknown mesh '" + spec + "' (expected ico:L, uv:SLICESxSTACKS or file:PATH)");
 }
 
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ','))
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
-
 template <typename F>
 std::vector<double> timeRuns(int reps, F&& run) {
     std::vector<double> ms;
