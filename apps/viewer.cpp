@@ -1,0 +1,187 @@
+#include "apps/viewer.h"
+
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "core/camera.h"
+
+namespace eikon::app {
+namespace {
+
+static_assert(GLFW_KEY_LAST + 1 == 349, "Viewer::keysDown_ must hold every GLFW key");
+
+double scrollAccumulated = 0.0;  // the wheel arrives through a callback
+
+std::string statsLine(const std::vector<StageTime>& stages) {
+    std::string line;
+    for (const StageTime& s : stages) {
+        char buf[64];
+        std::snprintf(buf, sizeof(buf), "%s %.0f ms  ", s.name.c_str(),
+                      s.gpuMs > 0 ? s.gpuMs : s.cpuMs);
+        line += buf;
+    }
+    return line;
+}
+
+}  // namespace
+
+Viewer::Viewer(const Scene& scene, SceneDriver& driver, ViewHandles& handles,
+               GlfwWindowContext& window, FrameRenderer& renderer, ViewerOptions options)
+    : scene_(scene),
+      driver_(driver),
+      handles_(handles),
+      window_(window),
+      renderer_(renderer),
+      options_(std::move(options)) {
+    state_.frame = scene.time.frameStart;
+    state_.exposure = scene.render.exposure;
+    glfwSetScrollCallback(window_.window(),
+                          [](GLFWwindow*, double, double dy) { scrollAccumulated += dy; });
+}
+
+Viewer::~Viewer() {
+    glfwSetScrollCallback(window_.window(), nullptr);
+}
+
+bool Viewer::pressed(int key) {
+    const bool down = glfwGetKey(window_.window(), key) == GLFW_PRESS;
+    const bool edge = down && !keysDown_[key];
+    keysDown_[key] = down;
+    return edge;
+}
+
+CameraFrame Viewer::cameraNow() const {
+    return makeCameraFrame(renderer_.scene().camera, renderer_.volume().bounds, scene_.render.width,
+                           scene_.render.height);
+}
+
+void Viewer::showMarkers() {
+    state_.shown = state_.image;
+    handles_.drawMarkers(state_.shown);
+}
+
+bool Viewer::input() {
+    ViewerState& s = state_;
+    GLFWwindow* w = window_.window();
+    window_.pollEvents();
+    if (pressed(GLFW_KEY_ESCAPE)) return false;
+    if (pressed(GLFW_KEY_E)) s.exposure += 0.5f;
+    if (pressed(GLFW_KEY_Q)) s.exposure -= 0.5f;
+    if (pressed(GLFW_KEY_SPACE)) s.playing = !s.playing;
+    if (pressed(GLFW_KEY_RIGHT_BRACKET)) ++s.frame, s.dirty = true;
+    if (pressed(GLFW_KEY_LEFT_BRACKET)) --s.frame, s.dirty = true;
+    if (pressed(GLFW_KEY_R) && s.orbit) {
+        s.orbit.emplace(scene_.camera, renderer_.volume().bounds, scene_.render.width,
+                        scene_.render.height);
+        s.dirty = true;
+    }
+    if (pressed(GLFW_KEY_H) && s.rendered > 0) {
+        handles_.selectNext();
+        showMarkers();
+    }
+    s.screenshotAsked = pressed(GLFW_KEY_P);
+    double x = 0, y = 0;
+    glfwGetCursorPos(w, &x, &y);
+    // The cursor is in window units; the image may be shown larger or smaller.
+    int windowWidth = 0, windowHeight = 0;
+    glfwGetWindowSize(w, &windowWidth, &windowHeight);
+    const float toImage = windowWidth > 0 ? float(scene_.render.width) / float(windowWidth) : 1.0f;
+    const glm::vec2 cursor = toImage * glm::vec2(float(x), float(y));
+    const glm::vec2 moved = toImage * glm::vec2(float(x - s.lastX), float(y - s.lastY));
+    const bool left = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    if (left && s.orbiting && s.orbit && (x != s.lastX || y != s.lastY)) {
+        s.orbit->orbit(-0.01f * float(x - s.lastX), -0.01f * float(y - s.lastY));
+        s.dirty = true;
+    }
+    s.orbiting = left;
+    const bool right = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    if (right && !s.draggingHandle && s.rendered > 0) {
+        s.draggingHandle = true;
+        if (handles_.pick(cursor)) showMarkers();
+    } else if (right && handles_.selected() && moved != glm::vec2(0.0f)) {
+        s.pendingDrag += moved;
+        s.dirty = true;
+    } else if (!right && s.draggingHandle) {
+        s.draggingHandle = false;
+        if (handles_.selected())
+            std::printf("%s\n",
+                        handles_.describeSelected(renderer_, driver_.timeOfFrame(s.frame)).c_str());
+    }
+    s.lastX = x, s.lastY = y;
+    if (scrollAccumulated != 0.0 && s.orbit) {
+        s.orbit->zoom(std::pow(0.9f, float(scrollAccumulated)));
+        scrollAccumulated = 0.0;
+        s.dirty = true;
+    }
+    if (s.playing) ++s.frame, s.dirty = true;
+    if (s.frame > scene_.time.frameEnd) s.frame = scene_.time.frameStart;
+    if (s.frame < scene_.time.frameStart) s.frame = scene_.time.frameEnd;
+    if (options_.exitAfter > 0 && s.rendered > 0 && s.orbit) {
+        s.orbit->orbit(0.1745f, 0.0f);
+        s.dirty = true;
+    }
+    return true;
+}
+
+void Viewer::render() {
+    ViewerState& s = state_;
+    const bool scriptedNow = options_.drag && s.rendered == 1;
+    if (scriptedNow) s.pendingDrag += options_.drag->pixels, s.dirty = true;
+    if (!s.dirty) return;
+    const int width = scene_.render.width;
+    driver_.prepareFrame(renderer_, s.frame);
+    if (s.orbit) renderer_.scene().camera = s.orbit->spec();  // the user's view wins
+    if (s.pendingDrag != glm::vec2(0.0f) && s.rendered > 0) {
+        const CameraFrame camera = cameraNow();
+        handles_.locate(renderer_, camera, width);
+        if (scriptedNow)
+            std::printf("before the drag: %s\n",
+                        handles_.describeSelected(renderer_, driver_.timeOfFrame(s.frame)).c_str());
+        const auto start = std::chrono::steady_clock::now();
+        handles_.drag(renderer_, camera, width, s.pendingDrag);
+        s.dragMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        s.pendingDrag = glm::vec2(0.0f);
+    }
+    s.image = renderer_.render(s.frame);
+    if (!s.orbit)
+        s.orbit.emplace(scene_.camera, renderer_.volume().bounds, width, scene_.render.height);
+    handles_.locate(renderer_, cameraNow(), width);
+    if (scriptedNow)
+        std::printf("after the drag: %s\n",
+                    handles_.describeSelected(renderer_, driver_.timeOfFrame(s.frame)).c_str());
+    showMarkers();
+    std::string stats = statsLine(renderer_.takeStats());
+    if (s.dragMs >= 0.0) {
+        char drag[48];
+        std::snprintf(drag, sizeof(drag), "ARAP drag %.1f ms  ", s.dragMs);
+        stats = drag + stats;
+        s.dragMs = -1.0;
+    }
+    if (scriptedNow) std::printf("the drag's frame: %s\n", stats.c_str());
+    const std::string title = "eikon view - frame " + std::to_string(s.frame) + " - " + stats;
+    glfwSetWindowTitle(window_.window(), title.c_str());
+    ++s.rendered;
+    s.dirty = false;
+}
+
+bool Viewer::present() {
+    const ViewerState& s = state_;
+    const auto fb = window_.framebufferSize();
+    display_.draw(s.shown, s.exposure, scene_.render.toneCurve, fb.width, fb.height);
+    const bool last = options_.exitAfter > 0 && s.rendered >= options_.exitAfter;
+    if ((last || s.screenshotAsked) && (!options_.screenshot.empty() || !last)) {
+        const std::string path =
+            options_.screenshot.empty() ? "eikon_view.png" : options_.screenshot;
+        writePngRgb8(path, fb.width, fb.height, display_.readPixels(fb.width, fb.height));
+        std::printf("wrote %s\n", path.c_str());
+    }
+    window_.swapBuffers();
+    return !last;
+}
+
+}  // namespace eikon::app

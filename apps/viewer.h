@@ -1,0 +1,84 @@
+#pragma once
+// The interactive viewer's loop in its four parts (eikon view, apps/cmd_view.cpp): input (keys,
+// mouse, wheel) changes the viewer state; render makes a new picture when the state says the
+// scene, the frame or the camera changed; present draws the last picture to the window and
+// saves screenshots. The state lives in one struct, so that what a key does is a change of a
+// field, and what the loop shows follows from the fields.
+#include <optional>
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include "apps/orbit_camera.h"
+#include "apps/scene_driver.h"
+#include "apps/view_handles.h"
+#include "render/display_pass.h"
+#include "render/frame_renderer.h"
+#include "render/gl_context.h"
+#include "render/image.h"
+
+struct GLFWwindow;
+
+namespace eikon::app {
+
+// A scripted drag (--drag): the handle's name and the pixels it moves by.
+struct ScriptedDrag {
+    std::string handle;
+    glm::vec2 pixels{0.0f};
+};
+
+struct ViewerOptions {
+    int exitAfter = 0;  // render this many frames (orbiting 10 degrees each), then quit
+    std::string screenshot;
+    std::optional<ScriptedDrag> drag;
+};
+
+// What the user has asked for so far, and what is on screen.
+struct ViewerState {
+    int frame = 0;
+    float exposure = 0.0f;
+    bool dirty = true;  // the picture must be rendered again
+    bool playing = false;
+    int rendered = 0;
+    Image image, shown;  // the render, and the render with the handles' markers
+    std::optional<OrbitCamera> orbit;
+    double lastX = 0, lastY = 0;  // the cursor at the last input, window units
+    bool orbiting = false, draggingHandle = false;
+    glm::vec2 pendingDrag{0.0f};  // image pixels the selected handle still has to move
+    double dragMs = -1.0;         // the last drag's solve, for the title; -1: none since
+    bool screenshotAsked = false;
+};
+
+class Viewer {
+public:
+    // The window must be the renderer's context (GPU) or at least current (CPU twin).
+    Viewer(const Scene& scene, SceneDriver& driver, ViewHandles& handles, GlfwWindowContext& window,
+           FrameRenderer& renderer, ViewerOptions options);
+    ~Viewer();
+
+    // Reads the window's events into the state; false when the user quits (Esc).
+    bool input();
+    // Renders the frame the state asks for, if anything changed.
+    void render();
+    // Draws the last picture, saves a screenshot when asked; false when --exit-after is reached.
+    bool present();
+
+    const ViewerState& state() const { return state_; }
+
+private:
+    CameraFrame cameraNow() const;
+    void showMarkers();
+
+    const Scene& scene_;  // as loaded: its camera is the one R resets to
+    SceneDriver& driver_;
+    ViewHandles& handles_;
+    GlfwWindowContext& window_;
+    FrameRenderer& renderer_;
+    ViewerOptions options_;
+    DisplayPass display_;
+    ViewerState state_;
+    bool keysDown_[349] = {};  // GLFW_KEY_LAST + 1 (checked in viewer.cpp)
+    bool pressed(int key);     // true once per press
+};
+
+}  // namespace eikon::app
