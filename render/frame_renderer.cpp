@@ -169,7 +169,8 @@ Image FrameRenderer::render(int frame) {
     const bool transportActive = !transportKey.empty();
     const bool transportChanged = transportActive && transportKey != transportInputs_;
     const bool curved = setup.params.pipeline.x != 0;
-    const bool wantGradient = curved || (transportActive && needs.gradient);
+    // The octree is built on the ∇n volume's n: a method that needs it needs that volume too.
+    const bool wantGradient = curved || (transportActive && (needs.gradient || needs.octree));
     const bool wantOctree = transportActive && needs.octree;
     std::vector<unsigned char> refractionInputs;
     if (wantGradient) refractionInputs = gradientInputs(setup, slotGrids);
