@@ -13,7 +13,7 @@
 
 namespace eikon {
 
-// Canonical names (ARCHITECTURE.md "VDB names"): what materials and the pipeline ask for.
+// Canonical names (docs/architecture.md, "VDB names"): what materials and the pipeline ask for.
 namespace field {
 inline constexpr const char* kDensity = "density";
 inline constexpr const char* kTemperature = "temperature";

@@ -1,7 +1,7 @@
 #pragma once
 // A triangle mesh as the rest of Eikon sees it: positions and index triples, nothing else.
 // `sim` loads and deforms meshes (on OpenMesh) and hands them over in this form; `render`
-// voxelizes it. Neither includes the other: they meet here (ARCHITECTURE.md).
+// voxelizes it. Neither includes the other: they meet here (docs/architecture.md).
 // Winding: counter-clockwise seen from outside, so a closed mesh has a positive signed volume.
 #include <cstdint>
 #include <vector>

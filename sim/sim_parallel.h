@@ -1,8 +1,8 @@
 #pragma once
-// Parallel loops whose results do not depend on the thread count (ARCHITECTURE.md "Determinism"):
-// cells are split into z-slabs where each cell's result is independent, and sums are taken per
-// fixed-size block and then added serially in block order, so that the rounding is the same
-// whatever TBB's partitioner chooses.
+// Parallel loops whose results do not depend on the thread count (docs/architecture.md,
+// "Determinism"): cells are split into z-slabs where each cell's result is independent, and sums
+// are taken per fixed-size block and then added serially in block order, so that the rounding is
+// the same whatever TBB's partitioner chooses.
 #include <algorithm>
 #include <cstddef>
 #include <vector>

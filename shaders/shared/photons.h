@@ -1,5 +1,5 @@
-// Photon tracing, steps 4 and 5 of Sun et al. 2008 (docs/METHODS.md §1), the same on the GPU and
-// in the CPU twin (render/transport/photons/photon_tracing_cpu.cpp).
+// Photon tracing, steps 4 and 5 of Sun et al. 2008 (docs/methods.md, `photons`), the same on the
+// GPU and in the CPU twin (render/transport/photons/photon_tracing_cpu.cpp).
 //
 // Two parts. The GpuPhoton struct sits under its own include guard, so that C++ can include this
 // file once at namespace scope with EK_PHOTON_TYPES_ONLY defined (for the struct alone) and again

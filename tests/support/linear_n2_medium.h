@@ -1,6 +1,6 @@
 #pragma once
-// The medium whose paths are known in closed form (METHODS.md, "Ground truth"): n² linear in y,
-// n² = kN0² + kAlpha (y + 1) on the box [-1, 1]³. With the optical parameter dτ = ds/n a path is
+// The medium whose paths are known in closed form (docs/methods.md, "Closed forms"): n² linear in
+// y, n² = kN0² + kAlpha (y + 1) on the box [-1, 1]³. With the optical parameter dτ = ds/n a path is
 // the parabola x(τ) = x0 + p0 τ + (∇n²/4) τ², p0 = n(x0)·dir. Shared by the curved view ray and
 // photon tests.
 #include <cmath>
