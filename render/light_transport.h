@@ -12,12 +12,15 @@
 //
 // The output contract (shaders/shared/view_march.h reads it):
 //  - lights lit straight (their bit clear in params.pipeline.z) come with a transmittance toward
-//    the light, from a per-light volume (texture unit 1 on the GPU, outputCpu().lightTransmittance
-//    on the CPU) or marched at each view sample (params.image.w == EK_SHADOWS_MARCHED);
+//    the light, from a per-light volume (texture unit EK_UNIT_LIGHT_TRANSMITTANCE on the GPU,
+//    outputCpu().lightTransmittance on the CPU) or marched at each view sample (params.image.w ==
+//    EK_SHADOWS_MARCHED);
 //  - lights lit through the fluence (bit set in pipeline.z, pipeline.y = 1) come summed in one
 //    fluence volume (rgb: Σ flux·length per voxel) and one mean-direction volume (xyz: the
-//    luminance-weighted sum of the directions light travels), units 4 and 5 on the GPU;
-//  - receivers read their irradiance map (SSBO binding 8) for the lights in the fluence.
+//    luminance-weighted sum of the directions light travels), units EK_UNIT_PHOTON_RADIANCE and
+//    EK_UNIT_PHOTON_DIRECTION on the GPU;
+//  - receivers read their irradiance map (SSBO EK_SSBO_RECEIVER_MAP; every binding is named in
+//    shaders/shared/bindings.h) for the lights in the fluence.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -78,7 +81,7 @@ struct TransportInputsCpu {
 };
 
 // One frame's inputs to a GPU run: the field textures are uploaded, the params SSBO bound at
-// binding 0, and the ∇n and octree volumes computed when needs() asked for them.
+// EK_SSBO_VIEW_PARAMS, and the ∇n and octree volumes computed when needs() asked for them.
 struct TransportInputsGpu {
     const ViewSetup& setup;
     VolumeTextures& fields;

@@ -9,7 +9,7 @@
 
 EK_NAMESPACE_BEGIN
 
-// What volumes_bindings.glsl gives the shaders: field values and light transmittances by slot.
+// What volume_bindings.glsl gives the shaders: field values and light transmittances by slot.
 struct VolumeAccessCpu {
     const GpuViewParams& params;
     const float* fields[EK_MAX_MATERIALS] = {};
@@ -23,16 +23,18 @@ struct VolumeAccessCpu {
                    size_t(params.resolution.x) +
                size_t(v.x);
     }
-    vec4 fetchVolume(int slot, ivec3 v) const {
-        if (slot < EK_MAX_MATERIALS) return vec4(fields[slot][voxelIndex(v)], 0.0f, 0.0f, 0.0f);
-        if (slot == EK_GRADIENT_SLOT) return gradient[voxelIndex(v)];
-        if (slot == EK_PHOTON_RADIANCE_SLOT) return photonRadiance[voxelIndex(v)];
-        if (slot == EK_PHOTON_DIRECTION_SLOT) return photonDirection[voxelIndex(v)];
-        return lights[slot - EK_MAX_MATERIALS][voxelIndex(v)];
+    // One volume per kind, for the shared slot switch (shaders/shared/volume_slots.h).
+    vec4 fetchFieldVoxel(int field, ivec3 v) const {
+        return vec4(fields[field][voxelIndex(v)], 0.0f, 0.0f, 0.0f);
     }
+    vec4 fetchLightVoxel(int light, ivec3 v) const { return lights[light][voxelIndex(v)]; }
+    vec4 fetchGradientVoxel(ivec3 v) const { return gradient[voxelIndex(v)]; }
+    vec4 fetchPhotonRadianceVoxel(ivec3 v) const { return photonRadiance[voxelIndex(v)]; }
+    vec4 fetchPhotonDirectionVoxel(ivec3 v) const { return photonDirection[voxelIndex(v)]; }
 
     // The shared files are order-sensitive in GLSL; keep their order here too.
     // clang-format off
+#include "shaders/shared/volume_slots.h"
 #include "shaders/shared/sampling.h"
 #include "shaders/shared/optics.h"
 #include "shaders/shared/receivers.h"

@@ -37,7 +37,8 @@ public:
     ~LightVolumesGpu();
     // Recomputes every light's volume from the field textures (already uploaded).
     void compute(const ViewSetup& setup, VolumeTextures& fields, GpuStageTimer* timer);
-    // Binds the stacked light volumes (light l at z offset l·resolution.z) to texture unit 1.
+    // Binds the stacked light volumes (light l at z offset l·resolution.z) to texture unit
+    // EK_UNIT_LIGHT_TRANSMITTANCE (shaders/shared/bindings.h).
     void bind() const;
     // Reads light l's volume back (tests compare it with the CPU twin).
     LightVolumeCpu download(int light) const;
