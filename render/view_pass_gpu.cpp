@@ -40,12 +40,12 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
     if (light) light->bindGpu();
     glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
     glBindTexture(GL_TEXTURE_3D, gradientTexture);
-    if (p.environment.x == EK_ENVIRONMENT_IMAGE && !environmentTexture)
+    if (shared::environmentType(p) == EK_ENVIRONMENT_IMAGE && !environmentTexture)
         throw Error("view pass", "the environment image was not uploaded");
     glActiveTexture(GL_TEXTURE0 + EK_UNIT_ENVIRONMENT);
     glBindTexture(GL_TEXTURE_2D, environmentTexture);
     glActiveTexture(GL_TEXTURE0);
-    if (p.pipeline.y != 0 && !light)
+    if (shared::readsFluence(p) && !light)
         throw Error("view pass", "lighting through the fluence needs its volumes");
     program_->use();
     const auto local = program_->localSize();

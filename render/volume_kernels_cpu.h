@@ -16,7 +16,7 @@ struct VolumeAccessCpu {
     const vec4* lights[EK_MAX_LIGHTS] = {};
     const vec4* gradient = nullptr;         // the ∇n volume, for curved rays
     const vec4* photonRadiance = nullptr;   // the smoothed photon volumes, when the view reads
-    const vec4* photonDirection = nullptr;  // them (pipeline.y)
+    const vec4* photonDirection = nullptr;  // them (readsFluence)
 
     size_t voxelIndex(ivec3 v) const {
         return (size_t(v.z) * size_t(params.resolution.y) + size_t(v.y)) *
@@ -42,11 +42,11 @@ struct VolumeAccessCpu {
 };
 
 struct ViewKernelCpu : VolumeAccessCpu {
-    // The environment image (params.environment.y × z texels, row 0 at the top), when
-    // params.environment.x asks for it.
+    // The environment image (environmentWidth × environmentHeight texels, row 0 at the top),
+    // when environmentType(params) asks for it.
     const vec4* environment = nullptr;
     vec4 fetchEnvironment(ivec2 t) const {
-        return environment[size_t(t.y) * size_t(params.environment.y) + size_t(t.x)];
+        return environment[size_t(t.y) * size_t(environmentWidth(params)) + size_t(t.x)];
     }
     // The receiver map (render/receiver_map.h), when a receiver reads photons.
     const vec4* receiverMap = nullptr;

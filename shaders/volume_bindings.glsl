@@ -26,7 +26,7 @@ layout(binding = EK_UNIT_GRADIENT) uniform sampler3D gradientTex;
 // weighted direction.
 layout(binding = EK_UNIT_PHOTON_RADIANCE) uniform sampler3D photonRadianceTex;
 layout(binding = EK_UNIT_PHOTON_DIRECTION) uniform sampler3D photonDirectionTex;
-// The equirectangular environment image (RGBA32F), when params.environment.x asks for it.
+// The equirectangular environment image (RGBA32F), when environmentType(params) asks for it.
 layout(binding = EK_UNIT_ENVIRONMENT) uniform sampler2D environmentTex;
 
 ivec3 stackedVoxel(int slot, ivec3 voxel) {

@@ -17,12 +17,6 @@ class GpuStageTimer;
 class ShaderProgram;
 class VolumeTextures;
 
-// Whether light l reaches the medium through the photon volumes (params.pipeline.z): its light
-// volume is then neither computed nor read.
-inline bool lightComesAsPhotons(const shared::GpuViewParams& p, int l) {
-    return (p.pipeline.z & (1 << l)) != 0;
-}
-
 using LightVolumeCpu = std::vector<glm::vec4>;  // x fastest, like DenseGrid
 
 // CPU twin: every voxel marches in parallel, or, with swept shadows, a directional light sweeps

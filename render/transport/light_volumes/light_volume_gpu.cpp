@@ -51,8 +51,8 @@ void LightVolumesGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
                               GpuStageTimer* timer) {
     const shared::GpuViewParams& p = setup.params;
     const glm::ivec3 res(p.resolution.x, p.resolution.y, p.resolution.z);
-    if (p.image.z == 0) return;
-    allocate(res, p.image.z);
+    if (shared::lightCount(p) == 0) return;
+    allocate(res, shared::lightCount(p));
     if (timer) timer->begin("light");
     fields.bind();
     // The light texture is written through an image unit; its texture unit gets nothing.
@@ -62,8 +62,8 @@ void LightVolumesGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
     glBindImageTexture(EK_IMAGE_LIGHT_TRANSMITTANCE, texture_, 0, GL_TRUE, 0, GL_READ_WRITE,
                        GL_RGBA32F);
     shared::LightKernelCpu hostKernel{{p}};  // the shared sweep decisions, on the host
-    for (int l = 0; l < p.image.z; ++l) {
-        if (lightComesAsPhotons(p, l)) continue;  // never read
+    for (int l = 0; l < shared::lightCount(p); ++l) {
+        if (shared::lightInFluence(p, l)) continue;  // never read
         if (!hostKernel.sweepsLight(l)) {
             march_->use();
             march_->setInt("lightIndex", l);
