@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include "render/shader_program.h"
+#include "shaders/shared/bindings.h"
 
 namespace eikon {
 
@@ -35,7 +36,7 @@ void DisplayPass::draw(const Image& image, float exposureStops, ToneCurve curve,
         textureWidth_ = image.width;
         textureHeight_ = image.height;
     }
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_DISPLAY_IMAGE);
     glBindTexture(GL_TEXTURE_2D, texture_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT,

@@ -2,16 +2,13 @@
 // The scene's environment image ("environment": {"type": "image"}): an equirectangular linear EXR
 // read once per change of its path (not every frame), kept in memory for the CPU twin and, on
 // the GPU, uploaded once into the RGBA32F texture that shaders/volume_bindings.glsl samples on
-// unit 6. Core keeps only the path: it cannot read images.
+// EK_UNIT_ENVIRONMENT (shaders/shared/bindings.h). Core keeps only the path: it cannot read images.
 #include <string>
 
 #include "core/scene.h"
 #include "render/image.h"
 
 namespace eikon {
-
-// Texture unit of the environment image (shaders/volume_bindings.glsl).
-constexpr int kEnvironmentTextureUnit = 6;
 
 // Reads an environment image. Throws eikon::Error whose where() is `jsonPath` (e.g.
 // "scene.json:/environment/file") and whose reason names `file`: a missing file, a folder, a file

@@ -77,11 +77,12 @@ namespace {
 std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
                                           const std::vector<const DenseGrid*>& grids) {
     const shared::GpuViewParams& p = setup.params;
+    const int materials = shared::materialCount(p);
     std::vector<float> values = {
-        p.volumeMin.x,         p.volumeMin.y,        p.volumeMin.z,         p.volumeMax.x,
-        p.volumeMax.y,         p.volumeMax.z,        float(p.resolution.x), float(p.resolution.y),
-        float(p.resolution.z), float(p.resolution.w)};
-    for (int m = 0; m < p.resolution.w; ++m) {
+        p.volumeMin.x,         p.volumeMin.y,   p.volumeMin.z,         p.volumeMax.x,
+        p.volumeMax.y,         p.volumeMax.z,   float(p.resolution.x), float(p.resolution.y),
+        float(p.resolution.z), float(materials)};
+    for (int m = 0; m < materials; ++m) {
         values.push_back(p.materials[m].emission.w);
         values.push_back(p.materials[m].scattering.w);  // Gladstone–Dale's 1/T_ambient
         values.push_back(float(p.materials[m].slot.x));
@@ -100,7 +101,7 @@ std::vector<unsigned char> octreeInputs(const ViewSetup& setup,
     std::vector<unsigned char> key = gradientKey;
     appendBytes(key, &settings, sizeof(settings));
     if (settings.kappaTolerance > 0.0f)
-        for (int m = 0; m < setup.params.resolution.w; ++m) {
+        for (int m = 0; m < shared::materialCount(setup.params); ++m) {
             appendBytes(key, &setup.params.materials[m].absorption, sizeof(glm::vec4));
             appendBytes(key, &setup.params.materials[m].scattering, sizeof(glm::vec4));
         }
@@ -168,7 +169,7 @@ Image FrameRenderer::render(int frame) {
     std::vector<unsigned char> transportKey = transport_->cacheKey(setup, slotGrids);
     const bool transportActive = !transportKey.empty();
     const bool transportChanged = transportActive && transportKey != transportInputs_;
-    const bool curved = setup.params.pipeline.x != 0;
+    const bool curved = shared::curvedRays(setup.params);
     // The octree is built on the ∇n volume's n: a method that needs it needs that volume too.
     const bool wantGradient = curved || (transportActive && (needs.gradient || needs.octree));
     const bool wantOctree = transportActive && needs.octree;

@@ -19,10 +19,10 @@ StageScope::~StageScope() {
 
 bool viewReadsLightTransmittance(const ViewSetup& setup) {
     const shared::GpuViewParams& p = setup.params;
-    if (p.image.z == 0 || p.image.w == EK_SHADOWS_MARCHED) return false;
-    if (p.pipeline.z == (1 << p.image.z) - 1) return false;  // every light comes in the fluence
-    if (p.pipeline.w > 0) return true;                       // receivers are lit through them
-    for (int m = 0; m < p.resolution.w; ++m) {
+    if (shared::lightCount(p) == 0 || shared::shadowMode(p) == EK_SHADOWS_MARCHED) return false;
+    if (shared::allLightsInFluence(p)) return false;
+    if (shared::receiverCount(p) > 0) return true;  // receivers are lit through them
+    for (int m = 0; m < shared::materialCount(p); ++m) {
         const glm::vec4& s = p.materials[m].scattering;
         if (s.x > 0.0f || s.y > 0.0f || s.z > 0.0f) return true;
     }
@@ -71,7 +71,7 @@ std::vector<unsigned char> transportInputsKey(const ViewSetup& setup,
     p.environmentSky = p.environmentHorizon = p.environmentGround = glm::vec4(0.0f);
     // Receivers stop photons but not straight light; their albedo only shades the view. A
     // method whose output depends on them appends them itself.
-    p.pipeline.w = 0;
+    shared::setReceiverCount(p, 0);
     for (shared::GpuReceiver& r : p.receivers) r = shared::GpuReceiver{};
     // Sized first and copied into, not appended to an empty vector: GCC 12 warns (a false
     // -Wstringop-overflow) on insert() into an empty vector at this size.

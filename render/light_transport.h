@@ -11,13 +11,16 @@
 // never asks which method ran.
 //
 // The output contract (shaders/shared/view_march.h reads it):
-//  - lights lit straight (their bit clear in params.pipeline.z) come with a transmittance toward
-//    the light, from a per-light volume (texture unit 1 on the GPU, outputCpu().lightTransmittance
-//    on the CPU) or marched at each view sample (params.image.w == EK_SHADOWS_MARCHED);
-//  - lights lit through the fluence (bit set in pipeline.z, pipeline.y = 1) come summed in one
+//  - lights lit straight (lightInFluence(params, l) false) come with a transmittance toward
+//    the light, from a per-light volume (texture unit EK_UNIT_LIGHT_TRANSMITTANCE on the GPU,
+//    outputCpu().lightTransmittance on the CPU) or marched at each view sample
+//    (shadowMode(params) == EK_SHADOWS_MARCHED);
+//  - lights lit through the fluence (lightInFluence, readsFluence) come summed in one
 //    fluence volume (rgb: Σ flux·length per voxel) and one mean-direction volume (xyz: the
-//    luminance-weighted sum of the directions light travels), units 4 and 5 on the GPU;
-//  - receivers read their irradiance map (SSBO binding 8) for the lights in the fluence.
+//    luminance-weighted sum of the directions light travels), units EK_UNIT_PHOTON_RADIANCE and
+//    EK_UNIT_PHOTON_DIRECTION on the GPU;
+//  - receivers read their irradiance map (SSBO EK_SSBO_RECEIVER_MAP; every binding is named in
+//    shaders/shared/bindings.h) for the lights in the fluence.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -67,7 +70,7 @@ struct EnergyBalance {
 // The output contract on the CPU: views into the method's own storage, valid until its next run.
 struct TransportOutputCpu {
     std::vector<const glm::vec4*> lightTransmittance;  // per light lit straight; empty if none
-    const glm::vec4* fluence = nullptr;                // when pipeline.y is set
+    const glm::vec4* fluence = nullptr;                // when readsFluence(params)
     const glm::vec4* direction = nullptr;
     const glm::vec4* receiverMap = nullptr;  // receiverMapTexels(params) texels
     size_t fluenceVoxels = 0;                // voxels of fluence and direction
@@ -91,7 +94,7 @@ struct TransportInputsCpu {
 };
 
 // One frame's inputs to a GPU run: the field textures are uploaded, the params SSBO bound at
-// binding 0, and the ∇n and octree volumes computed when needs() asked for them.
+// EK_SSBO_VIEW_PARAMS, and the ∇n and octree volumes computed when needs() asked for them.
 struct TransportInputsGpu {
     const ViewSetup& setup;
     VolumeTextures& fields;
@@ -107,9 +110,10 @@ public:
     virtual std::string name() const = 0;
     // The shared stages the run reads.
     virtual TransportNeeds needs() const = 0;
-    // Writes the method's part of the view parameters: params.pipeline.y and z (which lights come
-    // through the fluence), params.image.w and volumeMax.w (how transmittance is found); keeps
-    // what else of the scene its run reads (the seed).
+    // Writes the method's part of the view parameters (the setters in shaders/shared/gpu_types.h):
+    // which lights come through the fluence (setLightInFluence, setReadsFluence) and how the view
+    // finds transmittance (setShadowMode, setShadowStep); keeps what else of the scene its run
+    // reads (the seed).
     virtual void configure(const Scene& scene, ViewSetup& setup) = 0;
     // The bytes the output depends on, for the setup configure() wrote: equal keys, equal output,
     // so the frame renderer skips the run. Empty when there is nothing to compute this frame

@@ -2,6 +2,8 @@
 
 #include <epoxy/gl.h>
 
+#include "shaders/shared/bindings.h"
+
 namespace eikon {
 
 ParamsBuffer::ParamsBuffer() {
@@ -15,7 +17,7 @@ ParamsBuffer::~ParamsBuffer() {
 void ParamsBuffer::upload(const shared::GpuViewParams& params) {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer_);
     glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(params), &params, GL_DYNAMIC_DRAW);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_VIEW_PARAMS, buffer_);
 }
 
 }  // namespace eikon

@@ -1,6 +1,6 @@
 #pragma once
-// The GpuViewParams SSBO at binding 0, shared by the light-volume passes and the viewing pass of
-// a frame: uploaded once per frame.
+// The GpuViewParams SSBO at binding EK_SSBO_VIEW_PARAMS (shaders/shared/bindings.h), shared by the
+// light-volume passes and the viewing pass of a frame: uploaded once per frame.
 #include "shaders/shared/gpu_types.h"
 
 namespace eikon {
@@ -11,7 +11,7 @@ public:
     ~ParamsBuffer();
     ParamsBuffer(const ParamsBuffer&) = delete;
     ParamsBuffer& operator=(const ParamsBuffer&) = delete;
-    // Uploads and binds to SSBO binding 0.
+    // Uploads and binds to EK_SSBO_VIEW_PARAMS.
     void upload(const shared::GpuViewParams& params);
 
 private:

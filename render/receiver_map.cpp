@@ -10,7 +10,7 @@ namespace eikon {
 
 size_t receiverMapTexels(const shared::GpuViewParams& params) {
     size_t texels = 0;
-    for (int r = 0; r < params.pipeline.w; ++r)
+    for (int r = 0; r < shared::receiverCount(params); ++r)
         texels += size_t(params.receivers[r].texels.x) * size_t(params.receivers[r].texels.y);
     return texels;
 }
@@ -23,7 +23,7 @@ std::vector<glm::vec4> receiverMapFromFixed(const shared::GpuViewParams& params,
                                         std::to_string(sums.size()));
     shared::VolumeAccessCpu volume{params};  // for the shared receiverTexelArea
     std::vector<glm::vec4> map(texels, glm::vec4(0.0f));
-    for (int r = 0; r < params.pipeline.w; ++r) {
+    for (int r = 0; r < shared::receiverCount(params); ++r) {
         const glm::ivec4 t = params.receivers[r].texels;
         const double area = double(volume.receiverTexelArea(r));
         const size_t count = size_t(t.x) * size_t(t.y);

@@ -65,9 +65,9 @@ public:
     RefractionVolumesGpu& operator=(const RefractionVolumesGpu&) = delete;
 
     // Recomputes the gradient volume from the field textures (already uploaded) and the params
-    // SSBO (already bound at binding 0), then the octree from its n. Timer stages: "gradient",
-    // "octree".
-    // withOctree = false computes the gradient only (the viewing pass needs no octree).
+    // SSBO (already bound at EK_SSBO_VIEW_PARAMS), then the octree from its n. Timer stages:
+    // "gradient", "octree". withOctree = false computes the gradient only (the viewing pass needs
+    // no octree).
     void compute(const ViewSetup& setup, VolumeTextures& fields,
                  const OctreeSettings& settings = {}, GpuStageTimer* timer = nullptr,
                  bool withOctree = true);

@@ -7,15 +7,11 @@
 #include "render/refraction_volume.h"
 #include "render/shader_program.h"
 #include "render/volume_textures.h"
+#include "shaders/shared/bindings.h"
 
 namespace eikon {
 
 namespace {
-
-// Bindings the refraction shaders declare (image units and the pyramid's SSBO binding). Image
-// unit 2 and SSBO binding 3 are used by no other pass, so nothing needs rebinding around them.
-constexpr GLuint kVolumeImageUnit = 2;
-constexpr GLuint kPyramidBinding = 3;
 
 size_t voxelCount(glm::ivec3 r) {
     return size_t(r.x) * size_t(r.y) * size_t(r.z);
@@ -88,7 +84,7 @@ void RefractionVolumesGpu::compute(const ViewSetup& setup, VolumeTextures& field
 
 void RefractionVolumesGpu::computeGradient(glm::ivec3 res) {
     gradientProgram_->use();
-    glBindImageTexture(kVolumeImageUnit, gradient_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(EK_IMAGE_GRADIENT, gradient_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatchCovering(res);
     // The pyramid's level 0 reads n through imageLoad; later passes may sample the texture.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
@@ -97,10 +93,10 @@ void RefractionVolumesGpu::computeGradient(glm::ivec3 res) {
 
 void RefractionVolumesGpu::computeOctree(const ViewSetup& setup, const OctreeSettings& settings) {
     const glm::ivec3 res = resolution_;
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPyramidBinding, pyramid_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_OCTREE_PYRAMID, pyramid_);
     minMaxProgram_->use();
     minMaxProgram_->setIVec3("resolution", res);
-    glBindImageTexture(kVolumeImageUnit, gradient_, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(EK_IMAGE_GRADIENT, gradient_, 0, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
     for (int level = 0; level < octreeLevelCount(res); ++level) {
         minMaxProgram_->setInt("level", level);
         dispatchCovering(octreeLevelSize(res, level));
@@ -115,7 +111,7 @@ void RefractionVolumesGpu::computeOctree(const ViewSetup& setup, const OctreeSet
     labelProgram_->setFloat("minStep", octreeStepInScene(setup, settings.minStepVoxels));
     labelProgram_->setFloat("kappaTolerance", settings.kappaTolerance);
     labelProgram_->setFloat("voxelLength", octreeStepInScene(setup, 1.0f));
-    glBindImageTexture(kVolumeImageUnit, octree_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(EK_IMAGE_OCTREE, octree_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatchCovering(res);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }

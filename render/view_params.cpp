@@ -55,7 +55,7 @@ void packEnvironment(const Scene& scene, glm::ivec2 imageSize, shared::GpuViewPa
 
 // Receivers: the planes, their map layouts (plane receivers: texelsPerVoxel texels along each
 // voxel edge of the two in-plane axes; voxel receivers need no map) and their count in
-// pipeline.w. A plane must cut the volume, or nothing could ever reach it.
+// receiverCount. A plane must cut the volume, or nothing could ever reach it.
 void packReceivers(const Scene& scene, const RenderVolume& volume, shared::GpuViewParams& p) {
     if (scene.receivers.size() > EK_MAX_RECEIVERS)
         throw Error(scene.path + ":/receivers",
@@ -82,7 +82,7 @@ void packReceivers(const Scene& scene, const RenderVolume& volume, shared::GpuVi
                               volume.resolution[(spec.axis + 2) % 3] * tpv, offset, 0);
         offset += g.texels.x * g.texels.y;
     }
-    p.pipeline.w = int(scene.receivers.size());
+    shared::setReceiverCount(p, int(scene.receivers.size()));
 }
 
 }  // namespace
@@ -100,16 +100,23 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     const glm::vec3 voxel = volume.voxelSize();
     const float smallestVoxel = std::min({voxel.x, voxel.y, voxel.z});
 
-    p.cameraOrigin = v4(camera.origin, camera.tanHalfFovX);
-    p.cameraRight = v4(camera.right, camera.aspect);
+    p.cameraOrigin = v4(camera.origin);
+    p.cameraRight = v4(camera.right);
     p.cameraUp = v4(camera.up);
     p.cameraForward = v4(camera.forward);
-    p.volumeMin = v4(volume.bounds.min, scene.render.stepVoxels * smallestVoxel);
-    p.volumeMax = v4(volume.bounds.max, 0.0f);  // w: the light-transport method's shadow step
-    p.resolution = glm::ivec4(volume.resolution, int(scene.materials.size()));
-    p.image = glm::ivec4(scene.render.width, scene.render.height, int(scene.lights.size()),
-                         EK_SHADOWS_VOLUME);  // w: the light-transport method's
-    p.background = v4(scene.environment.color, scene.render.minTransmittance);
+    shared::setTanHalfFovX(p, camera.tanHalfFovX);
+    shared::setImageAspect(p, camera.aspect);
+    p.volumeMin = v4(volume.bounds.min);
+    p.volumeMax = v4(volume.bounds.max);
+    shared::setViewStep(p, scene.render.stepVoxels * smallestVoxel);
+    shared::setShadowStep(p, 0.0f);  // the light-transport method's (LightTransport::configure)
+    p.resolution = glm::ivec4(volume.resolution, 0);
+    shared::setMaterialCount(p, int(scene.materials.size()));
+    p.image = glm::ivec4(scene.render.width, scene.render.height, 0, 0);
+    shared::setLightCount(p, int(scene.lights.size()));
+    shared::setShadowMode(p, EK_SHADOWS_VOLUME);  // the light-transport method's
+    p.background = v4(scene.environment.color);
+    shared::setMinTransmittance(p, scene.render.minTransmittance);
     packEnvironment(scene, environmentSize, p);
 
     for (size_t m = 0; m < scene.materials.size(); ++m) {
@@ -128,7 +135,8 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     // n ≡ 1 everywhere takes straight rays and needs no ∇n volume.
     bool refracts = false;
     for (const MaterialSpec& mat : scene.materials) refracts = refracts || mat.ior != 1.0f;
-    p.pipeline = glm::ivec4(refracts ? 1 : 0, 0, 0, 0);
+    p.pipeline = glm::ivec4(0);
+    shared::setCurvedRays(p, refracts);
     packReceivers(scene, volume, p);
     return setup;
 }

@@ -19,8 +19,8 @@ class ShaderProgram;
 // CPU twin: rows in parallel (TBB), each pixel independent, so the result does not depend on the
 // thread count. `light`: the light-transport method's output (render/light_transport.h), empty
 // when the setup reads none. `gradient` is the ∇n volume (render/refraction_volume.h) when
-// setup.params.pipeline.x asks for curved rays, else empty. `environment`: the environment image
-// when params.environment.x asks for one.
+// curvedRays(setup.params) asks for curved rays, else empty. `environment`: the environment image
+// when environmentType(params) asks for one.
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient = {},
                     const Image* environment = nullptr);
@@ -35,7 +35,7 @@ public:
     // light: the light-transport method whose last GPU run the setup reads (null when it reads
     // none); it binds its output to the contract's units. gradientTexture: the ∇n volume for
     // curved rays (0 when the rays are straight). environmentTexture: the environment image
-    // (render/environment_map.h) when setup.params.environment.x asks for one.
+    // (render/environment_map.h) when environmentType(setup.params) asks for one.
     Image render(const ViewSetup& setup, VolumeTextures& textures, const LightTransport* light,
                  unsigned gradientTexture, GpuStageTimer* timer = nullptr,
                  unsigned environmentTexture = 0);

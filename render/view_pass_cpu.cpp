@@ -16,17 +16,18 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
         throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
                                            " field grids, got " + std::to_string(slotGrids.size()));
     shared::ViewKernelCpu kernel{{p}};
-    if (viewReadsLightTransmittance(setup) && int(light.lightTransmittance.size()) != p.image.z)
+    if (viewReadsLightTransmittance(setup) &&
+        int(light.lightTransmittance.size()) != shared::lightCount(p))
         throw Error("view pass (CPU)", "the light volumes were not computed");
     for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
         kernel.lights[l] = light.lightTransmittance[l];
-    if (p.pipeline.x != 0) {
+    if (shared::curvedRays(p)) {
         if (gradient.size() !=
             size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z))
             throw Error("view pass (CPU)", "curved rays need the gradient volume");
         kernel.gradient = gradient.data();
     }
-    if (p.pipeline.y != 0) {
+    if (shared::readsFluence(p)) {
         const size_t voxels =
             size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z);
         if (!light.fluence || !light.direction || light.fluenceVoxels != voxels)
@@ -37,9 +38,9 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
             throw Error("view pass (CPU)", "the receiver map was not computed");
         kernel.receiverMap = light.receiverMap;
     }
-    if (p.environment.x == EK_ENVIRONMENT_IMAGE) {
-        if (!environment || environment->width != p.environment.y ||
-            environment->height != p.environment.z)
+    if (shared::environmentType(p) == EK_ENVIRONMENT_IMAGE) {
+        if (!environment || environment->width != shared::environmentWidth(p) ||
+            environment->height != shared::environmentHeight(p))
             throw Error("view pass (CPU)", "the environment image was not loaded");
         kernel.environment = environment->pixels.data();
     }

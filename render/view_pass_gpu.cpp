@@ -6,6 +6,7 @@
 #include "render/shader_program.h"
 #include "render/view_pass.h"
 #include "render/volume_textures.h"
+#include "shaders/shared/bindings.h"
 
 namespace eikon {
 
@@ -33,17 +34,18 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
         outputWidth_ = width;
         outputHeight_ = height;
     }
-    glBindImageTexture(0, outputTexture_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(EK_IMAGE_VIEW_OUTPUT, outputTexture_, 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                       GL_RGBA32F);
     textures.bind();
     if (light) light->bindGpu();
-    glActiveTexture(GL_TEXTURE2);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
     glBindTexture(GL_TEXTURE_3D, gradientTexture);
-    if (p.environment.x == EK_ENVIRONMENT_IMAGE && !environmentTexture)
+    if (shared::environmentType(p) == EK_ENVIRONMENT_IMAGE && !environmentTexture)
         throw Error("view pass", "the environment image was not uploaded");
-    glActiveTexture(GL_TEXTURE0 + kEnvironmentTextureUnit);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_ENVIRONMENT);
     glBindTexture(GL_TEXTURE_2D, environmentTexture);
     glActiveTexture(GL_TEXTURE0);
-    if (p.pipeline.y != 0 && !light)
+    if (shared::readsFluence(p) && !light)
         throw Error("view pass", "lighting through the fluence needs its volumes");
     program_->use();
     const auto local = program_->localSize();

@@ -9,30 +9,32 @@
 
 EK_NAMESPACE_BEGIN
 
-// What volumes_bindings.glsl gives the shaders: field values and light transmittances by slot.
+// What volume_bindings.glsl gives the shaders: field values and light transmittances by slot.
 struct VolumeAccessCpu {
     const GpuViewParams& params;
     const float* fields[EK_MAX_MATERIALS] = {};
     const vec4* lights[EK_MAX_LIGHTS] = {};
     const vec4* gradient = nullptr;         // the ∇n volume, for curved rays
     const vec4* photonRadiance = nullptr;   // the smoothed photon volumes, when the view reads
-    const vec4* photonDirection = nullptr;  // them (pipeline.y)
+    const vec4* photonDirection = nullptr;  // them (readsFluence)
 
     size_t voxelIndex(ivec3 v) const {
         return (size_t(v.z) * size_t(params.resolution.y) + size_t(v.y)) *
                    size_t(params.resolution.x) +
                size_t(v.x);
     }
-    vec4 fetchVolume(int slot, ivec3 v) const {
-        if (slot < EK_MAX_MATERIALS) return vec4(fields[slot][voxelIndex(v)], 0.0f, 0.0f, 0.0f);
-        if (slot == EK_GRADIENT_SLOT) return gradient[voxelIndex(v)];
-        if (slot == EK_PHOTON_RADIANCE_SLOT) return photonRadiance[voxelIndex(v)];
-        if (slot == EK_PHOTON_DIRECTION_SLOT) return photonDirection[voxelIndex(v)];
-        return lights[slot - EK_MAX_MATERIALS][voxelIndex(v)];
+    // One volume per kind, for the shared slot switch (shaders/shared/volume_slots.h).
+    vec4 fetchFieldVoxel(int field, ivec3 v) const {
+        return vec4(fields[field][voxelIndex(v)], 0.0f, 0.0f, 0.0f);
     }
+    vec4 fetchLightVoxel(int light, ivec3 v) const { return lights[light][voxelIndex(v)]; }
+    vec4 fetchGradientVoxel(ivec3 v) const { return gradient[voxelIndex(v)]; }
+    vec4 fetchPhotonRadianceVoxel(ivec3 v) const { return photonRadiance[voxelIndex(v)]; }
+    vec4 fetchPhotonDirectionVoxel(ivec3 v) const { return photonDirection[voxelIndex(v)]; }
 
     // The shared files are order-sensitive in GLSL; keep their order here too.
     // clang-format off
+#include "shaders/shared/volume_slots.h"
 #include "shaders/shared/sampling.h"
 #include "shaders/shared/optics.h"
 #include "shaders/shared/receivers.h"
@@ -40,11 +42,11 @@ struct VolumeAccessCpu {
 };
 
 struct ViewKernelCpu : VolumeAccessCpu {
-    // The environment image (params.environment.y × z texels, row 0 at the top), when
-    // params.environment.x asks for it.
+    // The environment image (environmentWidth × environmentHeight texels, row 0 at the top),
+    // when environmentType(params) asks for it.
     const vec4* environment = nullptr;
     vec4 fetchEnvironment(ivec2 t) const {
-        return environment[size_t(t.y) * size_t(params.environment.y) + size_t(t.x)];
+        return environment[size_t(t.y) * size_t(environmentWidth(params)) + size_t(t.x)];
     }
     // The receiver map (render/receiver_map.h), when a receiver reads photons.
     const vec4* receiverMap = nullptr;

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include "core/error.h"
+#include "shaders/shared/bindings.h"
 
 namespace eikon {
 
@@ -66,8 +67,9 @@ int VolumeTextures::update(const std::vector<const DenseGrid*>& slotGrids) {
 }
 
 void VolumeTextures::bind() const {
-    glActiveTexture(GL_TEXTURE0);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_FIELDS);
     glBindTexture(GL_TEXTURE_3D, texture_);
+    glActiveTexture(GL_TEXTURE0);
 }
 
 }  // namespace eikon

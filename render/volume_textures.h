@@ -25,7 +25,7 @@ public:
     // Makes slot s hold slotGrids[s] (all on one render volume); returns how many slots had to
     // be uploaded. Throws eikon::Error when the stack exceeds the driver's 3D texture size.
     int update(const std::vector<const DenseGrid*>& slotGrids);
-    // Binds the stacked texture to texture unit 0.
+    // Binds the stacked texture to texture unit EK_UNIT_FIELDS (shaders/shared/bindings.h).
     void bind() const;
 
     int uploads() const { return uploads_; }

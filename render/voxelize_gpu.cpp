@@ -5,6 +5,7 @@
 
 #include "render/shader_program.h"
 #include "render/voxelize.h"
+#include "shaders/shared/bindings.h"
 
 namespace eikon {
 
@@ -88,9 +89,9 @@ void MeshVoxelizerGpu::voxelize(const TriangleMesh& mesh, const RenderVolume& vo
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     }
 
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positions_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, triangles_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, bits_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_VOXELIZE_POSITIONS, positions_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_VOXELIZE_TRIANGLES, triangles_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_VOXELIZE_BITS, bits_);
 
     toggle_->use();
     toggle_->setVec3("volumeMin", volume.bounds.min);
@@ -110,7 +111,7 @@ void MeshVoxelizerGpu::voxelize(const TriangleMesh& mesh, const RenderVolume& vo
     coverage_->use();
     coverage_->setIVec3("resolution", res);
     coverage_->setIVec3("fineResolution", fineRes);
-    glBindImageTexture(1, target, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+    glBindImageTexture(EK_IMAGE_COVERAGE, target, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
     glDispatchCompute(groups(size_t(res.x), 4), groups(size_t(res.y), 4), groups(size_t(res.z), 4));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -136,8 +137,9 @@ void MeshVoxelizerGpu::blur(unsigned texture, glm::ivec3 res, const IndexBlurSet
     const unsigned order[4] = {texture, scratch_, texture, scratch_};
     for (int axis = 0; axis < 3; ++axis) {
         blur_->setInt("axis", axis);
-        glBindImageTexture(1, order[axis], 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
-        glBindImageTexture(2, order[axis + 1], 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+        glBindImageTexture(EK_IMAGE_BLUR_SOURCE, order[axis], 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32F);
+        glBindImageTexture(EK_IMAGE_BLUR_TARGET, order[axis + 1], 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                           GL_R32F);
         glDispatchCompute(groups(size_t(res.x), 4), groups(size_t(res.y), 4),
                           groups(size_t(res.z), 4));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);

@@ -1,12 +1,13 @@
 #version 430 core
 // Shows a linear HDR image through the tone map the PNG writer uses (shaders/shared/tone_map.h).
+#include "shared/bindings.h"
 #include "shared/platform.h"
 #include "shared/tone_map.h"
 
 in vec2 uv;
 out vec4 color;
 
-layout(binding = 0) uniform sampler2D image;
+layout(binding = EK_UNIT_DISPLAY_IMAGE) uniform sampler2D image;
 uniform float exposureScale;
 uniform int toneCurve;  // EK_TONE_*
 

@@ -2,8 +2,10 @@
 // One axis of the separable Gaussian blur of an R32F volume (shaders/shared/gaussian_blur.h).
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-layout(r32f, binding = 1) readonly uniform image3D source;
-layout(r32f, binding = 2) writeonly uniform image3D target;
+#include "shared/bindings.h"
+
+layout(r32f, binding = EK_IMAGE_BLUR_SOURCE) readonly uniform image3D source;
+layout(r32f, binding = EK_IMAGE_BLUR_TARGET) writeonly uniform image3D target;
 
 uniform ivec3 resolution;
 uniform int axis;

@@ -5,7 +5,8 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "volume_bindings.glsl"
 
-layout(rgba32f, binding = 1) writeonly uniform image3D outTransmittance;  // all lights, stacked
+// All lights, stacked.
+layout(rgba32f, binding = EK_IMAGE_LIGHT_TRANSMITTANCE) writeonly uniform image3D outTransmittance;
 uniform int lightIndex;
 
 vec4 fetchPreviousSlice(ivec3 voxel) { return vec4(1.0f); }  // unused: marching needs no slices

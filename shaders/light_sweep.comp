@@ -5,7 +5,8 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "volume_bindings.glsl"
 
-layout(rgba32f, binding = 1) uniform image3D transmittance;  // all lights, stacked
+// All lights, stacked.
+layout(rgba32f, binding = EK_IMAGE_LIGHT_TRANSMITTANCE) uniform image3D transmittance;
 uniform int lightIndex;
 uniform int slice;
 

@@ -3,10 +3,11 @@
 // finished min/max pyramid.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
+#include "shared/bindings.h"
 #include "shared/platform.h"
 
-layout(std430, binding = 3) readonly buffer PyramidBlock { vec4 pyramid[]; };
-layout(rgba32f, binding = 2) writeonly uniform image3D outOctree;
+layout(std430, binding = EK_SSBO_OCTREE_PYRAMID) readonly buffer PyramidBlock { vec4 pyramid[]; };
+layout(rgba32f, binding = EK_IMAGE_OCTREE) writeonly uniform image3D outOctree;
 uniform ivec3 resolution;  // voxels
 uniform float epsilon;
 uniform float epsilonPrime;

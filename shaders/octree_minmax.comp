@@ -7,8 +7,8 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 // The params SSBO and the field textures, for κ at voxel centres (optics.h voxelExtinctionMax).
 #include "volume_bindings.glsl"
 
-layout(std430, binding = 3) buffer PyramidBlock { vec4 pyramid[]; };
-layout(rgba32f, binding = 2) readonly uniform image3D gradientVolume;  // w: n
+layout(std430, binding = EK_SSBO_OCTREE_PYRAMID) buffer PyramidBlock { vec4 pyramid[]; };
+layout(rgba32f, binding = EK_IMAGE_GRADIENT) readonly uniform image3D gradientVolume;  // w: n
 uniform ivec3 resolution;  // voxels
 uniform int level;
 

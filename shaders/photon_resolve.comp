@@ -5,11 +5,13 @@
 // rounds once, like the CPU's int64 → double conversion.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
+#include "shared/bindings.h"
+
 // Per voxel (x fastest) 6 int64 sums as (low, high) word pairs: r, g, b, then the weighted
 // direction x, y, z (shaders/photon_trace.comp).
-layout(std430, binding = 5) readonly buffer DepositBlock { uint deposits[]; };
-layout(rgba32f, binding = 1) writeonly uniform image3D radianceOut;
-layout(rgba32f, binding = 2) writeonly uniform image3D directionOut;
+layout(std430, binding = EK_SSBO_PHOTON_DEPOSITS) readonly buffer DepositBlock { uint deposits[]; };
+layout(rgba32f, binding = EK_IMAGE_PHOTON_RADIANCE_RAW) writeonly uniform image3D radianceOut;
+layout(rgba32f, binding = EK_IMAGE_PHOTON_DIRECTION_RAW) writeonly uniform image3D directionOut;
 uniform ivec3 resolution;
 uniform dvec4 depositScale;  // rgb: flux·length channels; w: weighted direction (0: no photons)
 

@@ -5,9 +5,10 @@
 // the GPU: the host issues the rounds without reading any count back.
 layout(local_size_x = 1) in;
 
+#include "shared/bindings.h"
 #include "shared/photon_rounds.h"
 
-layout(std430, binding = 9) buffer RoundBlock { uint rounds[]; };
+layout(std430, binding = EK_SSBO_PHOTON_ROUNDS) buffer RoundBlock { uint rounds[]; };
 
 uniform int listIn;      // the list the last round read (0 or 1); it appended to the other
 uniform uint stopCount;  // fewer active photons than this end the march (0: never)

@@ -130,24 +130,28 @@ void depositReceiverTexel(int index, vec3 flux);
 #include "shared/photons.h"
 #include "shared/photon_rounds.h"
 
-// Texture unit 3: no other volume pass uses it (volume_bindings.glsl takes 0-2).
-layout(binding = 3) uniform sampler3D octreeTex;
+// No other volume pass uses EK_UNIT_OCTREE.
+layout(binding = EK_UNIT_OCTREE) uniform sampler3D octreeTex;
 // Photons of all lights, light after light in the CPU twin's order. A generating dispatch covers
 // photons photonFirst .. photonFirst + photonCount − 1 of light lightIndex, stored from
 // photons[photonOffset]; a tracing dispatch covers photons[photonFirst ..] of all lights.
-layout(std430, binding = 4) buffer PhotonBlock { GpuPhoton photons[]; };
+layout(std430, binding = EK_SSBO_PHOTONS) buffer PhotonBlock { GpuPhoton photons[]; };
 // Per voxel (x fastest) 6 int64 sums as (low, high) word pairs: r, g, b, then the weighted
 // direction x, y, z.
-layout(std430, binding = 5) buffer DepositBlock { uint deposits[]; };
+layout(std430, binding = EK_SSBO_PHOTON_DEPOSITS) buffer DepositBlock { uint deposits[]; };
 // int64 pairs: escaped rgb, extinguished rgb, dropped rgb, steps, cut photons, received rgb.
-layout(std430, binding = 6) buffer TotalsBlock { uint totals[]; };
+layout(std430, binding = EK_SSBO_PHOTON_TOTALS) buffer TotalsBlock { uint totals[]; };
 // Per receiver map texel (render/receiver_map.h) 3 int64 flux sums as (low, high) word pairs.
-layout(std430, binding = 7) buffer ReceiverBlock { uint receiverDeposits[]; };
+layout(std430, binding = EK_SSBO_RECEIVER_DEPOSITS) buffer ReceiverBlock {
+    uint receiverDeposits[];
+};
 // The round header and the two lists of active photon indices (shared/photon_rounds.h).
-layout(std430, binding = 9) buffer RoundBlock { uint rounds[]; };
+layout(std430, binding = EK_SSBO_PHOTON_ROUNDS) buffer RoundBlock { uint rounds[]; };
 // Per photon: xyz the flux it has lost to extinction in the rounds so far, carried between rounds
 // so that its bookkeeping adds the same float sum as one uninterrupted march.
-layout(std430, binding = 10) buffer ExtinguishedBlock { vec4 photonExtinguished[]; };
+layout(std430, binding = EK_SSBO_PHOTON_EXTINGUISHED) buffer ExtinguishedBlock {
+    vec4 photonExtinguished[];
+};
 
 uniform int lightIndex;
 uniform int lightGrid;  // EK_PHOTON_GRID_*

@@ -7,7 +7,8 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #include "shared/material_index.h"
 #include "shared/refraction.h"
 
-layout(rgba32f, binding = 2) writeonly uniform image3D outGradient;  // xyz: ∇n; w: n
+// xyz: ∇n; w: n.
+layout(rgba32f, binding = EK_IMAGE_GRADIENT) writeonly uniform image3D outGradient;
 
 void main() {
     const ivec3 v = ivec3(gl_GlobalInvocationID);

@@ -5,13 +5,15 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "volume_bindings.glsl"
 
 // The receiver map (render/receiver_map.h): rgb irradiance per texel of every plane receiver.
-layout(std430, binding = 8) readonly buffer ReceiverMapBlock { vec4 receiverTexels[]; };
+layout(std430, binding = EK_SSBO_RECEIVER_MAP) readonly buffer ReceiverMapBlock {
+    vec4 receiverTexels[];
+};
 vec4 fetchReceiverTexel(int index) { return receiverTexels[index]; }
 
 #include "shared/environment.h"
 #include "shared/view_march.h"
 
-layout(rgba32f, binding = 0) writeonly uniform image2D outImage;
+layout(rgba32f, binding = EK_IMAGE_VIEW_OUTPUT) writeonly uniform image2D outImage;
 
 void main() {
     const ivec2 p = ivec2(gl_GlobalInvocationID.xy);

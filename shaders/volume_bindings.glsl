@@ -1,34 +1,47 @@
 // Bindings every volume pass shares: the packed parameters, the field volumes and the light
 // transmittance volumes, the environment image, and the fetch hooks shaders/shared/sampling.h and
-// shaders/shared/environment.h expect.
+// shaders/shared/environment.h expect. The binding numbers are named in shaders/shared/bindings.h,
+// which the host binds by.
 //
 // Each kind lives in ONE 3D texture with its volumes stacked along z (slot s at z offset
 // s·resolution.z), so every fetch goes through one sampler: llvmpipe turns a sampler array
 // indexed by a variable into a per-lane loop (~100x slower), and a switch over constant indices
-// into masked execution of every case.
+// into masked execution of every case. The switch from a slot to its kind is
+// shaders/shared/volume_slots.h, which the CPU twin runs too; the hooks below give it one sampler
+// per kind.
+#include "shared/bindings.h"
 #include "shared/gpu_types.h"
 
-layout(std430, binding = 0) readonly buffer ViewParamsBlock { GpuViewParams params; };
-layout(binding = 0) uniform sampler3D fieldTex;  // R32F, EK_MAX_MATERIALS slots at most
-layout(binding = 1) uniform sampler3D lightTex;  // RGBA32F, one volume per light
-layout(binding = 2) uniform sampler3D gradientTex;  // RGBA32F: xyz = ∇n, w = n (curved rays)
-// Unit 3 is the photon pass's octree. The smoothed photon volumes (render/transport/photons/photon_radiance.h):
-layout(binding = 4) uniform sampler3D photonRadianceTex;   // RGBA32F: rgb = Σ flux·length
-layout(binding = 5) uniform sampler3D photonDirectionTex;  // RGBA32F: xyz = Σ weighted direction
-// The equirectangular environment image (RGBA32F), when params.environment.x asks for it.
-layout(binding = 6) uniform sampler2D environmentTex;
+layout(std430, binding = EK_SSBO_VIEW_PARAMS) readonly buffer ViewParamsBlock {
+    GpuViewParams params;
+};
+// R32F, EK_MAX_MATERIALS slots at most.
+layout(binding = EK_UNIT_FIELDS) uniform sampler3D fieldTex;
+// RGBA32F, one volume per light.
+layout(binding = EK_UNIT_LIGHT_TRANSMITTANCE) uniform sampler3D lightTex;
+// RGBA32F: xyz = ∇n, w = n (curved rays).
+layout(binding = EK_UNIT_GRADIENT) uniform sampler3D gradientTex;
+// EK_UNIT_OCTREE is the photon pass's octree. The smoothed photon volumes
+// (render/transport/photons/photon_radiance.h), RGBA32F: rgb = Σ flux·length, and xyz = Σ
+// weighted direction.
+layout(binding = EK_UNIT_PHOTON_RADIANCE) uniform sampler3D photonRadianceTex;
+layout(binding = EK_UNIT_PHOTON_DIRECTION) uniform sampler3D photonDirectionTex;
+// The equirectangular environment image (RGBA32F), when environmentType(params) asks for it.
+layout(binding = EK_UNIT_ENVIRONMENT) uniform sampler2D environmentTex;
 
 ivec3 stackedVoxel(int slot, ivec3 voxel) {
     return ivec3(voxel.x, voxel.y, voxel.z + slot * params.resolution.z);
 }
 
-vec4 fetchVolume(int slot, ivec3 voxel) {
-    if (slot < EK_MAX_MATERIALS) return texelFetch(fieldTex, stackedVoxel(slot, voxel), 0);
-    if (slot == EK_GRADIENT_SLOT) return texelFetch(gradientTex, voxel, 0);
-    if (slot == EK_PHOTON_RADIANCE_SLOT) return texelFetch(photonRadianceTex, voxel, 0);
-    if (slot == EK_PHOTON_DIRECTION_SLOT) return texelFetch(photonDirectionTex, voxel, 0);
-    return texelFetch(lightTex, stackedVoxel(slot - EK_MAX_MATERIALS, voxel), 0);
+vec4 fetchFieldVoxel(int field, ivec3 voxel) {
+    return texelFetch(fieldTex, stackedVoxel(field, voxel), 0);
 }
+vec4 fetchLightVoxel(int light, ivec3 voxel) {
+    return texelFetch(lightTex, stackedVoxel(light, voxel), 0);
+}
+vec4 fetchGradientVoxel(ivec3 voxel) { return texelFetch(gradientTex, voxel, 0); }
+vec4 fetchPhotonRadianceVoxel(ivec3 voxel) { return texelFetch(photonRadianceTex, voxel, 0); }
+vec4 fetchPhotonDirectionVoxel(ivec3 voxel) { return texelFetch(photonDirectionTex, voxel, 0); }
 
 // Exact texels: the shared code filters, so the GPU matches the CPU twin.
 vec4 fetchEnvironment(ivec2 texel) { return texelFetch(environmentTex, texel, 0); }
@@ -44,15 +57,22 @@ vec4 filterStacked(sampler3D tex, int slot, vec3 indexPos) {
     return texture(tex, vec3(q.x, q.y, q.z + float(slot) * res.z) / size);
 }
 
-vec4 filterVolume(int slot, vec3 indexPos) {
-    if (slot < EK_MAX_MATERIALS) return filterStacked(fieldTex, slot, indexPos);
-    if (slot == EK_GRADIENT_SLOT) return filterStacked(gradientTex, 0, indexPos);
-    if (slot == EK_PHOTON_RADIANCE_SLOT) return filterStacked(photonRadianceTex, 0, indexPos);
-    if (slot == EK_PHOTON_DIRECTION_SLOT) return filterStacked(photonDirectionTex, 0, indexPos);
-    return filterStacked(lightTex, slot - EK_MAX_MATERIALS, indexPos);
+vec4 filterFieldVolume(int field, vec3 indexPos) {
+    return filterStacked(fieldTex, field, indexPos);
+}
+vec4 filterLightVolume(int light, vec3 indexPos) {
+    return filterStacked(lightTex, light, indexPos);
+}
+vec4 filterGradientVolume(vec3 indexPos) { return filterStacked(gradientTex, 0, indexPos); }
+vec4 filterPhotonRadianceVolume(vec3 indexPos) {
+    return filterStacked(photonRadianceTex, 0, indexPos);
+}
+vec4 filterPhotonDirectionVolume(vec3 indexPos) {
+    return filterStacked(photonDirectionTex, 0, indexPos);
 }
 #endif
 
+#include "shared/volume_slots.h"
 #include "shared/sampling.h"
 #include "shared/optics.h"
 #include "shared/receivers.h"

@@ -3,8 +3,10 @@
 // 4×4×4 fine samples inside, into an R32F volume.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-layout(std430, binding = 2) readonly buffer Bits { uint bits[]; };
-layout(r32f, binding = 1) writeonly uniform image3D coverage;
+#include "shared/bindings.h"
+
+layout(std430, binding = EK_SSBO_VOXELIZE_BITS) readonly buffer Bits { uint bits[]; };
+layout(r32f, binding = EK_IMAGE_COVERAGE) writeonly uniform image3D coverage;
 
 uniform ivec3 resolution;
 uniform ivec3 fineResolution;

@@ -3,7 +3,9 @@
 // into inside bits by a prefix XOR from the bottom up.
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 2) buffer Bits { uint bits[]; };
+#include "shared/bindings.h"
+
+layout(std430, binding = EK_SSBO_VOXELIZE_BITS) buffer Bits { uint bits[]; };
 
 uniform int columnCount;
 uniform int wordsPerColumn;

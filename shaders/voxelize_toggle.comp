@@ -3,9 +3,15 @@
 // each fine column it crosses, with atomicXor, so the bits do not depend on the order.
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = 1) readonly buffer Triangles { uvec4 triangles[]; };
-layout(std430, binding = 2) buffer Bits { uint bits[]; };
+#include "shared/bindings.h"
+
+layout(std430, binding = EK_SSBO_VOXELIZE_POSITIONS) readonly buffer Positions {
+    vec4 positions[];
+};
+layout(std430, binding = EK_SSBO_VOXELIZE_TRIANGLES) readonly buffer Triangles {
+    uvec4 triangles[];
+};
+layout(std430, binding = EK_SSBO_VOXELIZE_BITS) buffer Bits { uint bits[]; };
 
 uniform vec3 volumeMin;
 uniform vec3 fineVoxelSize;

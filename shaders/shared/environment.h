@@ -1,7 +1,8 @@
 // What a view ray sees once it leaves the volume: the radiance arriving from infinitely far along
-// its direction (params.environment.x picks EK_ENVIRONMENT_*). Up is +y. Needs from the includer:
-// the global `params`, EK_PI (optics.h) and `vec4 fetchEnvironment(ivec2 texel)` returning a
-// texel of the environment image (texel (0, 0) is the top-left, row 0 looks straight up).
+// its direction (environmentType(params) picks EK_ENVIRONMENT_*). Up is +y. Needs from the
+// includer: the global `params`, EK_PI (optics.h) and `vec4 fetchEnvironment(ivec2 texel)`
+// returning a texel of the environment image (texel (0, 0) is the top-left, row 0 looks straight
+// up).
 //
 // Equirectangular mapping of a unit direction d (after the rotation below):
 //   u = 0.5 + atan2(d.x, −d.z) / 2π  (0.5: looking along −z, 0.75: +x, 0.25: −x, 0 and 1: +z)
@@ -53,12 +54,12 @@ vec3 environmentGradient(vec3 dir) {
                             smoothstep(0.0f, EK_ENVIRONMENT_GROUND_BLEND, -dir.y));
 }
 
-// The equirectangular image, turned by rotation_deg about +y (params.environmentSky.y, z: its
-// cosine and sine): the image's content moves counter-clockwise seen from above, so the lookup
-// turns the view direction the other way.
+// The equirectangular image, turned by rotation_deg about +y (its cosine and sine in
+// environmentRotationCos/Sin): the image's content moves counter-clockwise seen from above, so the
+// lookup turns the view direction the other way.
 vec3 environmentImage(vec3 dir) {
-    const float c = params.environmentSky.y;
-    const float s = params.environmentSky.z;
+    const float c = environmentRotationCos(params);
+    const float s = environmentRotationSin(params);
     const vec3 d = vec3(c * dir.x - s * dir.z, dir.y, s * dir.x + c * dir.z);
     // atan2(0, 0) is undefined in GLSL; straight up or down every column meets at the pole.
     const bool pole = d.x == 0.0f && d.z == 0.0f;
@@ -66,8 +67,8 @@ vec3 environmentImage(vec3 dir) {
     // acos(d.y), but well conditioned near the poles, where acos turns the last bit of d.y into
     // 3e-4 radians and the GPU and the CPU twin, whose d differ in that bit, would part.
     const float v = environmentAtan2(sqrt(d.x * d.x + d.z * d.z), d.y) / EK_PI;
-    const int width = params.environment.y;
-    const int height = params.environment.z;
+    const int width = environmentWidth(params);
+    const int height = environmentHeight(params);
     const float tx = u * float(width) - 0.5f;
     const float ty = v * float(height) - 0.5f;
     const float bx = floor(tx);
@@ -88,8 +89,8 @@ vec3 environmentImage(vec3 dir) {
 
 // Radiance arriving along −dir from outside the volume, for a unit direction `dir`.
 vec3 environmentRadiance(vec3 dir) {
-    if (params.environment.x == EK_ENVIRONMENT_GRADIENT) return environmentGradient(dir);
-    if (params.environment.x == EK_ENVIRONMENT_IMAGE)
-        return params.environmentSky.x * environmentImage(dir);
+    if (environmentType(params) == EK_ENVIRONMENT_GRADIENT) return environmentGradient(dir);
+    if (environmentType(params) == EK_ENVIRONMENT_IMAGE)
+        return environmentIntensity(params) * environmentImage(dir);
     return vec3(params.background);
 }

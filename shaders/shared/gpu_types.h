@@ -62,23 +62,25 @@ struct GpuReceiver {
 
 // Everything the viewing pass needs besides the field textures.
 struct GpuViewParams {
-    vec4 cameraOrigin;   // xyz; w: tan(horizontal fov / 2)
-    vec4 cameraRight;    // xyz unit; w: image aspect (width / height)
+    vec4 cameraOrigin;   // xyz; w: tan(horizontal fov / 2) (tanHalfFovX)
+    vec4 cameraRight;    // xyz unit; w: image aspect, width / height (imageAspect)
     vec4 cameraUp;       // xyz unit
     vec4 cameraForward;  // xyz unit
-    vec4 volumeMin;      // xyz world; w: view step (scene units)
-    vec4 volumeMax;      // xyz world; w: shadow step (scene units)
-    ivec4 resolution;    // xyz voxels; w: material count
-    ivec4 image;         // x, y: pixels; z: light count; w: EK_SHADOWS_*
-    vec4 background;     // rgb radiance; w: minimum transmittance before a ray stops
-    ivec4 pipeline;      // x: 1 = curved view rays through the ∇n volume, 0 = straight;
-                         // y: 1 = in-scattering read from the photon volumes;
-                         // z: bit l set = light l's light reaches the medium through the photon
-                         //    volumes (not through its light volume); w: receiver count
-    // The environment (shaders/shared/environment.h). x: EK_ENVIRONMENT_*; y, z: the image's
-    // width and height in texels; w: 0.
+    vec4 volumeMin;      // xyz world; w: view step, scene units (viewStep)
+    vec4 volumeMax;      // xyz world; w: shadow step, scene units (shadowStep)
+    ivec4 resolution;    // xyz voxels; w: material count (materialCount)
+    ivec4 image;         // x, y: pixels; z: light count (lightCount); w: EK_SHADOWS_* (shadowMode)
+    vec4 background;     // rgb radiance; w: a ray stops below it (minTransmittance)
+    // The packed flags, read through the accessors below. x: 1 = curved view rays through the ∇n
+    // volume, 0 = straight (curvedRays); y: 1 = in-scattering read from the photon volumes
+    // (readsFluence); z: bit l set = light l's light reaches the medium through the photon
+    // volumes, not through its light volume (lightInFluence); w: receiver count (receiverCount).
+    ivec4 pipeline;
+    // The environment (shaders/shared/environment.h). x: EK_ENVIRONMENT_* (environmentType); y, z:
+    // the image's width and height in texels (environmentWidth, environmentHeight); w: 0.
     ivec4 environment;
-    // Gradient: rgb zenith. Image: x intensity; y, z: cosine and sine of the rotation about +y.
+    // Gradient: rgb zenith. Image: x intensity (environmentIntensity); y, z: cosine and sine of
+    // the rotation about +y (environmentRotationCos, environmentRotationSin).
     vec4 environmentSky;
     vec4 environmentHorizon;  // gradient: rgb horizon
     vec4 environmentGround;   // gradient: rgb ground
@@ -86,6 +88,138 @@ struct GpuViewParams {
     GpuLight lights[EK_MAX_LIGHTS];
     GpuReceiver receivers[EK_MAX_RECEIVERS];
 };
+
+// Named reads of the packed members of GpuViewParams, the same in the shaders, the CPU twin and on
+// the host: code reads curvedRays(params), never params.pipeline.x. C++ has them as functions,
+// GLSL as macros over the same expressions: a GLSL function would take the whole block by value,
+// and though Mesa optimises that copy away, the code it then generates is not the code of the
+// member read (the llvmpipe program binaries differ); a macro gives the very same instructions.
+// Keep the two lists equal.
+#ifdef __cplusplus
+inline bool curvedRays(const GpuViewParams& p) {
+    return p.pipeline.x != 0;  // view rays bend through the ∇n volume
+}
+inline bool readsFluence(const GpuViewParams& p) {
+    return p.pipeline.y != 0;  // in-scattering read from the photon (fluence) volumes
+}
+// Whether light l's light comes through the fluence volumes, not straight.
+inline bool lightInFluence(const GpuViewParams& p, int l) {
+    return (p.pipeline.z & (1 << l)) != 0;
+}
+inline bool anyLightInFluence(const GpuViewParams& p) {
+    return p.pipeline.z != 0;
+}
+inline bool allLightsInFluence(const GpuViewParams& p) {
+    return p.pipeline.z == (1 << p.image.z) - 1;
+}
+inline int receiverCount(const GpuViewParams& p) {
+    return p.pipeline.w;
+}
+inline int lightCount(const GpuViewParams& p) {
+    return p.image.z;
+}
+inline int shadowMode(const GpuViewParams& p) {
+    return p.image.w;  // EK_SHADOWS_*
+}
+inline int materialCount(const GpuViewParams& p) {
+    return p.resolution.w;
+}
+inline float viewStep(const GpuViewParams& p) {
+    return p.volumeMin.w;  // scene units
+}
+inline float shadowStep(const GpuViewParams& p) {
+    return p.volumeMax.w;  // scene units
+}
+inline float minTransmittance(const GpuViewParams& p) {
+    return p.background.w;  // a view ray stops below it
+}
+inline float tanHalfFovX(const GpuViewParams& p) {
+    return p.cameraOrigin.w;
+}
+inline float imageAspect(const GpuViewParams& p) {
+    return p.cameraRight.w;  // width / height
+}
+inline int environmentType(const GpuViewParams& p) {
+    return p.environment.x;  // EK_ENVIRONMENT_*
+}
+inline int environmentWidth(const GpuViewParams& p) {
+    return p.environment.y;  // texels of the image
+}
+inline int environmentHeight(const GpuViewParams& p) {
+    return p.environment.z;
+}
+inline float environmentIntensity(const GpuViewParams& p) {
+    return p.environmentSky.x;  // the image's
+}
+inline float environmentRotationCos(const GpuViewParams& p) {
+    return p.environmentSky.y;  // the image's rotation about +y
+}
+inline float environmentRotationSin(const GpuViewParams& p) {
+    return p.environmentSky.z;
+}
+#else
+#define curvedRays(p) ((p).pipeline.x != 0)
+#define readsFluence(p) ((p).pipeline.y != 0)
+#define lightInFluence(p, l) (((p).pipeline.z & (1 << (l))) != 0)
+#define anyLightInFluence(p) ((p).pipeline.z != 0)
+#define allLightsInFluence(p) ((p).pipeline.z == (1 << (p).image.z) - 1)
+#define receiverCount(p) ((p).pipeline.w)
+#define lightCount(p) ((p).image.z)
+#define shadowMode(p) ((p).image.w)
+#define materialCount(p) ((p).resolution.w)
+#define viewStep(p) ((p).volumeMin.w)
+#define shadowStep(p) ((p).volumeMax.w)
+#define minTransmittance(p) ((p).background.w)
+#define tanHalfFovX(p) ((p).cameraOrigin.w)
+#define imageAspect(p) ((p).cameraRight.w)
+#define environmentType(p) ((p).environment.x)
+#define environmentWidth(p) ((p).environment.y)
+#define environmentHeight(p) ((p).environment.z)
+#define environmentIntensity(p) ((p).environmentSky.x)
+#define environmentRotationCos(p) ((p).environmentSky.y)
+#define environmentRotationSin(p) ((p).environmentSky.z)
+#endif
+
+#ifdef __cplusplus
+// The host's writes of the same members (render/view_params.cpp, the light-transport methods'
+// configure()).
+inline void setTanHalfFovX(GpuViewParams& p, float t) {
+    p.cameraOrigin.w = t;
+}
+inline void setImageAspect(GpuViewParams& p, float aspect) {
+    p.cameraRight.w = aspect;
+}
+inline void setViewStep(GpuViewParams& p, float step) {
+    p.volumeMin.w = step;
+}
+inline void setShadowStep(GpuViewParams& p, float step) {
+    p.volumeMax.w = step;
+}
+inline void setMaterialCount(GpuViewParams& p, int count) {
+    p.resolution.w = count;
+}
+inline void setLightCount(GpuViewParams& p, int count) {
+    p.image.z = count;
+}
+inline void setShadowMode(GpuViewParams& p, int mode) {
+    p.image.w = mode;
+}
+inline void setMinTransmittance(GpuViewParams& p, float t) {
+    p.background.w = t;
+}
+inline void setCurvedRays(GpuViewParams& p, bool on) {
+    p.pipeline.x = on ? 1 : 0;
+}
+inline void setReadsFluence(GpuViewParams& p, bool on) {
+    p.pipeline.y = on ? 1 : 0;
+}
+inline void setLightInFluence(GpuViewParams& p, int l) {
+    p.pipeline.z |= 1 << l;
+}
+inline void setReceiverCount(GpuViewParams& p, int count) {
+    p.pipeline.w = count;
+}
+#endif
 
 EK_NAMESPACE_END
 

@@ -14,7 +14,7 @@
 // voxel per slice (measured against the marched reference in BENCHMARKS.md).
 
 bool sweepsLight(int l) {
-    return params.image.w == EK_SHADOWS_SWEPT &&
+    return shadowMode(params) == EK_SHADOWS_SWEPT &&
            int(params.lights[l].position.w) == EK_LIGHT_DIRECTIONAL;
 }
 

@@ -33,7 +33,7 @@ vec2 intersectVolume(vec3 origin, vec3 dir) {
 
 vec3 extinctionAt(vec3 indexPos) {
     vec3 kappa = vec3(0.0f);
-    for (int m = 0; m < params.resolution.w; ++m) {
+    for (int m = 0; m < materialCount(params); ++m) {
         const float f = sampleField(params.materials[m].slot.x, indexPos);
         kappa += f * (vec3(params.materials[m].absorption) + vec3(params.materials[m].scattering));
     }
@@ -44,7 +44,7 @@ vec3 extinctionAt(vec3 indexPos) {
 // octree.h), by the sum extinctionAt takes.
 float voxelExtinctionMax(ivec3 voxel) {
     vec3 kappa = vec3(0.0f);
-    for (int m = 0; m < params.resolution.w; ++m) {
+    for (int m = 0; m < materialCount(params); ++m) {
         const float f = fetchVolume(params.materials[m].slot.x, voxel).x;
         kappa += f * (vec3(params.materials[m].absorption) + vec3(params.materials[m].scattering));
     }
@@ -54,7 +54,7 @@ float voxelExtinctionMax(ivec3 voxel) {
 // exp(−∫κ) from x toward a light, up to `maxDistance` or the volume's edge.
 vec3 transmittanceToward(vec3 x, vec3 toLight, float maxDistance) {
     const float tEnd = min(intersectVolume(x, toLight).y, maxDistance);
-    const float h = params.volumeMax.w;
+    const float h = shadowStep(params);
     const int steps = min(int(ceil(max(tEnd, 0.0f) / h)), EK_MAX_STEPS);
     vec3 tau = vec3(0.0f);
     for (int i = 0; i < steps; ++i) {

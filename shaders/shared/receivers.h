@@ -19,7 +19,7 @@ int receiverCrossing(vec3 a, vec3 b, EK_OUT(float) t, EK_OUT(bool) front) {
     int hit = -1;
     t = 2.0f;
     front = false;
-    for (int r = 0; r < params.pipeline.w; ++r) {
+    for (int r = 0; r < receiverCount(params); ++r) {
         const float sa = receiverSide(r, a);
         const float sb = receiverSide(r, b);
         if ((sa > 0.0f) == (sb > 0.0f)) continue;

@@ -12,7 +12,7 @@
 
 float refractiveIndexAt(vec3 indexPos) {
     EK_PRECISE float n = 1.0f;
-    for (int m = 0; m < params.resolution.w; ++m) {
+    for (int m = 0; m < materialCount(params); ++m) {
         const float f = sampleField(params.materials[m].slot.x, indexPos);
         n += materialIndexExcess(f, params.materials[m].emission.w,
                                  params.materials[m].scattering.w);
@@ -25,7 +25,7 @@ float refractiveIndexAt(vec3 indexPos) {
 // of eight, and with no texture-unit rounding on either sampling path.
 float refractiveIndexAtVoxel(ivec3 v) {
     EK_PRECISE float n = 1.0f;
-    for (int m = 0; m < params.resolution.w; ++m) {
+    for (int m = 0; m < materialCount(params); ++m) {
         const float f = fetchVolume(params.materials[m].slot.x, v).x;
         n += materialIndexExcess(f, params.materials[m].emission.w,
                                  params.materials[m].scattering.w);

@@ -1,5 +1,5 @@
 // The viewing pass: emission, absorption and single scattering of every light. A light's light
-// reaches the medium through the smoothed photon volumes (params.pipeline.z; light bent and
+// reaches the medium through the smoothed photon volumes (lightInFluence; light bent and
 // focused by refraction) or straight, with its transmittance (shadowing) taken from the light
 // volume (light_volume.h) or, as reference, marched toward the light from every sample (like
 // vdb_render). Rays that leave the volume see environmentRadiance (environment.h); rays that reach
@@ -25,7 +25,7 @@ vec3 photonInScattering(vec3 p, vec3 dir, vec3 sigma[EK_MAX_MATERIALS]) {
     const bool directed = len > 1e-20f;
     const float cosTheta = directed ? dot(weightedDir / len, -dir) : 0.0f;
     vec3 scattered = vec3(0.0f);
-    for (int m = 0; m < params.resolution.w; ++m)
+    for (int m = 0; m < materialCount(params); ++m)
         scattered += sigma[m] * (directed ? phaseHG(params.materials[m].absorption.w, cosTheta)
                                           : 1.0f / (4.0f * EK_PI));
     return scattered * fluence;
@@ -34,12 +34,13 @@ vec3 photonInScattering(vec3 p, vec3 dir, vec3 sigma[EK_MAX_MATERIALS]) {
 // Light l's transmittance on its way to x (volume index position p): from its light volume, or
 // marched toward it (EK_SHADOWS_MARCHED, the reference).
 vec3 lightShadow(int l, vec3 x, vec3 p, vec3 toLight, float lightDistance) {
-    if (params.image.w == EK_SHADOWS_MARCHED) return transmittanceToward(x, toLight, lightDistance);
+    if (shadowMode(params) == EK_SHADOWS_MARCHED)
+        return transmittanceToward(x, toLight, lightDistance);
     return vec3(sampleVolume(EK_MAX_MATERIALS + l, p));
 }
 
 // Irradiance on receiver r at x (on its plane) from the lights whose light comes as photons
-// (params.pipeline.z). Plane receivers read their map (the flux of the photons that crossed the
+// (lightInFluence). Plane receivers read their map (the flux of the photons that crossed the
 // plane, per area); voxel receivers read the smoothed photon volumes 1.5 voxels in front of the
 // plane, where they are not yet cut by it: fluence rate times the net flux's cosine with the
 // normal, |Σ lum·dir| ≤ lum(Σ flux·length) making that factor a cosine in [0, 1].
@@ -68,11 +69,11 @@ vec3 receiverPhotonIrradiance(int r, vec3 x) {
 // transmittance. Its back face is black.
 vec3 receiverRadiance(int r, vec3 x, bool front) {
     if (!front) return vec3(0.0f);
-    vec3 irradiance = params.pipeline.z != 0 ? receiverPhotonIrradiance(r, x) : vec3(0.0f);
+    vec3 irradiance = anyLightInFluence(params) ? receiverPhotonIrradiance(r, x) : vec3(0.0f);
     const vec3 normal = receiverNormal(r);
     const vec3 p = worldToVolumeIndex(x);
-    for (int l = 0; l < params.image.z; ++l) {
-        if ((params.pipeline.z & (1 << l)) != 0) continue;  // in the photon map
+    for (int l = 0; l < lightCount(params); ++l) {
+        if (lightInFluence(params, l)) continue;  // in the photon map
         vec3 toLight;
         float lightDistance;
         const vec3 e = lightIrradiance(l, x, toLight, lightDistance);
@@ -94,17 +95,17 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
     // Per-material scattering, kept for the phase function of each light below.
     vec3 sigma[EK_MAX_MATERIALS];
     bool scatters = false;
-    for (int m = 0; m < params.resolution.w; ++m) {
+    for (int m = 0; m < materialCount(params); ++m) {
         const float field = sampleField(params.materials[m].slot.x, p);
         sigma[m] = field * vec3(params.materials[m].scattering);
         kappa += field * vec3(params.materials[m].absorption) + sigma[m];
         source += field * vec3(params.materials[m].emission);
         scatters = scatters || sigma[m].x + sigma[m].y + sigma[m].z > 0.0f;
     }
-    if (scatters && params.pipeline.y != 0) source += photonInScattering(p, dir, sigma);
+    if (scatters && readsFluence(params)) source += photonInScattering(p, dir, sigma);
     if (scatters) {
-        for (int l = 0; l < params.image.z; ++l) {
-            if ((params.pipeline.z & (1 << l)) != 0) continue;  // in the photon volumes
+        for (int l = 0; l < lightCount(params); ++l) {
+            if (lightInFluence(params, l)) continue;  // in the photon volumes
             vec3 toLight;
             float lightDistance;
             const vec3 irradiance = lightIrradiance(l, x, toLight, lightDistance);
@@ -112,7 +113,7 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
             // Light travels along −toLight and scatters toward the camera, along −dir.
             const float cosTheta = dot(-toLight, -dir);
             vec3 scattered = vec3(0.0f);
-            for (int m = 0; m < params.resolution.w; ++m)
+            for (int m = 0; m < materialCount(params); ++m)
                 scattered += sigma[m] * phaseHG(params.materials[m].absorption.w, cosTheta);
             source += scattered * irradiance * lightShadow(l, x, p, toLight, lightDistance);
         }
@@ -120,7 +121,7 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
     radiance += transmittance * source *
                 vec3(stepWeight(kappa.x, s), stepWeight(kappa.y, s), stepWeight(kappa.z, s));
     transmittance *= exp(-kappa * s);
-    if (max(max(transmittance.x, transmittance.y), transmittance.z) < params.background.w) {
+    if (max(max(transmittance.x, transmittance.y), transmittance.z) < minTransmittance(params)) {
         transmittance = vec3(0.0f);  // what is left is below the cut-off the scene set
         return false;
     }
@@ -141,7 +142,7 @@ void rayStep(EK_INOUT(vec3) x, EK_INOUT(vec3) v, float ds) {
 // gets the direction the ray leaves with.
 vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
                     EK_INOUT(vec3) transmittance, EK_OUT(vec3) exitDir) {
-    const float h = params.volumeMin.w;
+    const float h = viewStep(params);
     vec3 x = entry;
     vec3 v = dir * sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(x)).w;
     exitDir = dir;
@@ -190,19 +191,19 @@ vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
 }
 
 // Radiance reaching the camera along a ray, and the ray's transmittance through the volume.
-// Straight rays integrate exactly-clipped steps along t; curved rays (params.pipeline.x) follow
+// Straight rays integrate exactly-clipped steps along t; curved rays (curvedRays) follow
 // the ray equation inside the volume, where n varies, and leave along their bent direction.
 vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
     transmittance = vec3(1.0f);
     vec3 radiance = vec3(0.0f);
     const vec2 span = intersectVolume(origin, dir);
     if (!(span.x < span.y)) return environmentRadiance(dir);
-    if (params.pipeline.x != 0) {
+    if (curvedRays(params)) {
         vec3 exitDir;
         traceCurvedRay(origin + dir * span.x, dir, true, radiance, transmittance, exitDir);
         return radiance + transmittance * environmentRadiance(exitDir);
     }
-    const float h = params.volumeMin.w;
+    const float h = viewStep(params);
     const int steps = min(int(ceil((span.y - span.x) / h)), EK_MAX_STEPS);
     for (int i = 0; i < steps; ++i) {
         const float t0 = span.x + float(i) * h;
@@ -228,9 +229,9 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
 // (core/camera.h projectToImage is its inverse).
 vec3 pixelRayDirection(int px, int py) {
     const float u =
-        ((float(px) + 0.5f) / float(params.image.x) * 2.0f - 1.0f) * params.cameraOrigin.w;
+        ((float(px) + 0.5f) / float(params.image.x) * 2.0f - 1.0f) * tanHalfFovX(params);
     const float v = (1.0f - (float(py) + 0.5f) / float(params.image.y) * 2.0f) *
-                    params.cameraOrigin.w / params.cameraRight.w;
+                    tanHalfFovX(params) / imageAspect(params);
     return normalize(vec3(params.cameraForward) + u * vec3(params.cameraRight) +
                      v * vec3(params.cameraUp));
 }

@@ -12,9 +12,9 @@ void depositReceiverTexel(int index, vec3 flux);
 
 #include "../shared/photons.h"
 
-layout(binding = 3) uniform sampler3D octreeTex;
-layout(std430, binding = 4) buffer Photons { GpuPhoton photons[]; };
-layout(std430, binding = 5) buffer Deposits { uint deposits[]; };
+layout(binding = EK_UNIT_OCTREE) uniform sampler3D octreeTex;
+layout(std430, binding = EK_SSBO_PHOTONS) buffer Photons { GpuPhoton photons[]; };
+layout(std430, binding = EK_SSBO_PHOTON_DEPOSITS) buffer Deposits { uint deposits[]; };
 
 vec4 fetchOctree(ivec3 voxel) { return texelFetch(octreeTex, voxel, 0); }
 

@@ -74,7 +74,7 @@ TEST_CASE("curved view rays follow the closed-form parabola of a linear n^2 grad
     double previous = 1e9;
     for (float step : {1.0f, 0.5f, 0.25f}) {
         GradientScene s(res, step);
-        REQUIRE(s.setup.params.pipeline.x == 1);
+        REQUIRE(shared::curvedRays(s.setup.params));
         double worst = 0.0;
         for (glm::vec3 d : {glm::vec3(0.1f, 0.2f, -1.0f), glm::vec3(-0.2f, -0.1f, -1.0f),
                             glm::vec3(0.0f, -0.35f, -1.0f)}) {

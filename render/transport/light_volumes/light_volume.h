@@ -17,12 +17,6 @@ class GpuStageTimer;
 class ShaderProgram;
 class VolumeTextures;
 
-// Whether light l reaches the medium through the photon volumes (params.pipeline.z): its light
-// volume is then neither computed nor read.
-inline bool lightComesAsPhotons(const shared::GpuViewParams& p, int l) {
-    return (p.pipeline.z & (1 << l)) != 0;
-}
-
 using LightVolumeCpu = std::vector<glm::vec4>;  // x fastest, like DenseGrid
 
 // CPU twin: every voxel marches in parallel, or, with swept shadows, a directional light sweeps
@@ -37,7 +31,8 @@ public:
     ~LightVolumesGpu();
     // Recomputes every light's volume from the field textures (already uploaded).
     void compute(const ViewSetup& setup, VolumeTextures& fields, GpuStageTimer* timer);
-    // Binds the stacked light volumes (light l at z offset l·resolution.z) to texture unit 1.
+    // Binds the stacked light volumes (light l at z offset l·resolution.z) to texture unit
+    // EK_UNIT_LIGHT_TRANSMITTANCE (shaders/shared/bindings.h).
     void bind() const;
     // Reads light l's volume back (tests compare it with the CPU twin).
     LightVolumeCpu download(int light) const;

@@ -15,11 +15,12 @@ std::vector<LightVolumeCpu> computeLightVolumesCpu(const ViewSetup& setup,
     shared::LightKernelCpu kernel{{p}};
     for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
 
-    std::vector<LightVolumeCpu> volumes(size_t(p.image.z));
-    for (int l = 0; l < p.image.z; ++l) {
+    std::vector<LightVolumeCpu> volumes(size_t(shared::lightCount(p)));
+    for (int l = 0; l < shared::lightCount(p); ++l) {
         LightVolumeCpu& out = volumes[size_t(l)];
         out.assign(size_t(res.x) * size_t(res.y) * size_t(res.z), glm::vec4(1.0f));
-        if (lightComesAsPhotons(p, l)) continue;  // never read
+        // A light that comes through the fluence has a volume neither computed nor read.
+        if (shared::lightInFluence(p, l)) continue;
         shared::LightKernelCpu k = kernel;
         k.sweepSlices = out.data();
         if (!k.sweepsLight(l)) {

@@ -6,6 +6,7 @@
 #include "render/transport/light_volumes/light_volume.h"
 #include "render/volume_kernels_cpu.h"
 #include "render/volume_textures.h"
+#include "shaders/shared/bindings.h"
 
 namespace eikon {
 
@@ -33,7 +34,7 @@ void LightVolumesGpu::allocate(glm::ivec3 res, int lights) {
                                          " (lower the volume resolution or the light count)");
     if (texture_) glDeleteTextures(1, &texture_);
     glGenTextures(1, &texture_);
-    glActiveTexture(GL_TEXTURE1);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_LIGHT_TRANSMITTANCE);
     glBindTexture(GL_TEXTURE_3D, texture_);
     glTexStorage3D(GL_TEXTURE_3D, 1, GL_RGBA32F, res.x, res.y, res.z * lights);
     setVolumeSampling();
@@ -50,18 +51,19 @@ void LightVolumesGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
                               GpuStageTimer* timer) {
     const shared::GpuViewParams& p = setup.params;
     const glm::ivec3 res(p.resolution.x, p.resolution.y, p.resolution.z);
-    if (p.image.z == 0) return;
-    allocate(res, p.image.z);
+    if (shared::lightCount(p) == 0) return;
+    allocate(res, shared::lightCount(p));
     if (timer) timer->begin("light");
     fields.bind();
-    // The light texture is written through image unit 1; unit 1 for sampling gets nothing.
-    glActiveTexture(GL_TEXTURE1);
+    // The light texture is written through an image unit; its texture unit gets nothing.
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_LIGHT_TRANSMITTANCE);
     glBindTexture(GL_TEXTURE_3D, 0);
     glActiveTexture(GL_TEXTURE0);
-    glBindImageTexture(1, texture_, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(EK_IMAGE_LIGHT_TRANSMITTANCE, texture_, 0, GL_TRUE, 0, GL_READ_WRITE,
+                       GL_RGBA32F);
     shared::LightKernelCpu hostKernel{{p}};  // the shared sweep decisions, on the host
-    for (int l = 0; l < p.image.z; ++l) {
-        if (lightComesAsPhotons(p, l)) continue;  // never read
+    for (int l = 0; l < shared::lightCount(p); ++l) {
+        if (shared::lightInFluence(p, l)) continue;  // never read
         if (!hostKernel.sweepsLight(l)) {
             march_->use();
             march_->setInt("lightIndex", l);
@@ -87,7 +89,7 @@ void LightVolumesGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
 }
 
 void LightVolumesGpu::bind() const {
-    glActiveTexture(GL_TEXTURE1);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_LIGHT_TRANSMITTANCE);
     glBindTexture(GL_TEXTURE_3D, texture_);
     glActiveTexture(GL_TEXTURE0);
 }

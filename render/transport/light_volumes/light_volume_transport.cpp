@@ -40,8 +40,8 @@ LightVolumeTransport::~LightVolumeTransport() = default;
 
 void LightVolumeTransport::configure(const Scene&, ViewSetup& setup) {
     shared::GpuViewParams& p = setup.params;
-    p.image.w = shadowModeCode(settings_.shadows);
-    p.volumeMax.w = settings_.shadowStepVoxels * smallestVoxelEdge(p);
+    shared::setShadowMode(p, shadowModeCode(settings_.shadows));
+    shared::setShadowStep(p, settings_.shadowStepVoxels * smallestVoxelEdge(p));
 }
 
 std::vector<unsigned char> LightVolumeTransport::cacheKey(

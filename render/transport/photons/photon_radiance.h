@@ -54,12 +54,13 @@ public:
     PhotonRadianceGpu& operator=(const PhotonRadianceGpu&) = delete;
 
     // Traces, resolves and smooths. The field textures are uploaded, the ∇n and octree volumes
-    // computed, the params SSBO bound at binding 0. Timer stages: "photons", "smooth".
+    // computed, the params SSBO bound at EK_SSBO_VIEW_PARAMS. Timer stages: "photons", "smooth".
     void compute(const ViewSetup& setup, VolumeTextures& fields,
                  const RefractionVolumesGpu& refraction, const PhotonSettings& settings,
                  GpuStageTimer* timer);
-    // Binds the smoothed radiance and direction volumes to texture units 4 and 5
-    // (shaders/volume_bindings.glsl), and the receiver map to SSBO binding 8.
+    // Binds the smoothed radiance and direction volumes to texture units EK_UNIT_PHOTON_RADIANCE
+    // and EK_UNIT_PHOTON_DIRECTION, and the receiver map to EK_SSBO_RECEIVER_MAP
+    // (shaders/shared/bindings.h).
     void bind() const;
     // Photon steps of the last compute (read back: 8 bytes).
     int64_t lastSteps() const;

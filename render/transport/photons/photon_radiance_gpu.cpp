@@ -9,15 +9,11 @@
 #include "render/transport/photons/photon_radiance.h"
 #include "render/transport/photons/photon_tracing_gpu.h"
 #include "render/volume_textures.h"
+#include "shaders/shared/bindings.h"
 
 namespace eikon {
 
 namespace {
-
-constexpr GLuint kDepositBinding = 5;  // shaders/photon_resolve.comp
-constexpr GLuint kRadianceUnit = 4;    // shaders/volume_bindings.glsl
-constexpr GLuint kDirectionUnit = 5;
-constexpr GLuint kReceiverMapBinding = 8;  // shaders/view_straight.comp
 
 std::vector<glm::vec4> downloadVolume(unsigned texture, glm::ivec3 res) {
     std::vector<glm::vec4> out(size_t(res.x) * size_t(res.y) * size_t(res.z));
@@ -70,7 +66,7 @@ void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
 
     if (timer) timer->begin("smooth");
     // Neither volume may stay bound for sampling while images write it.
-    for (GLuint unit : {kRadianceUnit, kDirectionUnit}) {
+    for (GLuint unit : {EK_UNIT_PHOTON_RADIANCE, EK_UNIT_PHOTON_DIRECTION}) {
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_3D, 0);
     }
@@ -79,9 +75,11 @@ void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
     resolve_->setIVec3("resolution", res);
     const glm::dvec4& s = tracer_->fixedPointScale();
     glUniform4d(resolve_->uniformLocation("depositScale"), s.x, s.y, s.z, s.w);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepositBinding, tracer_->depositBuffer());
-    glBindImageTexture(1, raw_[0], 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    glBindImageTexture(2, raw_[1], 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_DEPOSITS, tracer_->depositBuffer());
+    glBindImageTexture(EK_IMAGE_PHOTON_RADIANCE_RAW, raw_[0], 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                       GL_RGBA32F);
+    glBindImageTexture(EK_IMAGE_PHOTON_DIRECTION_RAW, raw_[1], 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                       GL_RGBA32F);
     glDispatchCompute(GLuint((res.x + 3) / 4), GLuint((res.y + 3) / 4), GLuint((res.z + 3) / 4));
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     smoother_->smooth(raw_[0], smoothed_[0], res);
@@ -93,12 +91,12 @@ void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
 }
 
 void PhotonRadianceGpu::bind() const {
-    glActiveTexture(GL_TEXTURE0 + kRadianceUnit);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_PHOTON_RADIANCE);
     glBindTexture(GL_TEXTURE_3D, smoothed_[0]);
-    glActiveTexture(GL_TEXTURE0 + kDirectionUnit);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_PHOTON_DIRECTION);
     glBindTexture(GL_TEXTURE_3D, smoothed_[1]);
     glActiveTexture(GL_TEXTURE0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kReceiverMapBinding, receiverMap_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_MAP, receiverMap_);
 }
 
 // The map is read back and converted on the host by the twin's own code (a few hundred KB, once

@@ -89,7 +89,7 @@ PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings) {
     // deciding again, so that a last-bit difference can never change a photon count.
     shared::PhotonKernelCpu kernel{{setup.params}};
     const size_t perGrid = size_t(plan.side) * size_t(plan.side);
-    for (int l = 0; l < setup.params.image.z; ++l) {
+    for (int l = 0; l < shared::lightCount(setup.params); ++l) {
         PhotonLightPlan light;
         light.light = l;
         light.grid = kernel.photonGrid(l);

@@ -12,22 +12,13 @@
 #include "render/transport/photons/photon_tracing_gpu.h"
 #include "render/volume_kernels_cpu.h"
 #include "render/volume_textures.h"
+#include "shaders/shared/bindings.h"
 #include "shaders/shared/photon_rounds.h"
 
 namespace eikon {
 
 namespace {
 
-// Bindings shaders/photon_trace.comp declares. Texture unit 3 and SSBO bindings 4-7, 9, 10 are used
-// by no other pass, so nothing needs rebinding around them.
-constexpr GLuint kOctreeUnit = 3;
-constexpr GLuint kGradientUnit = 2;  // volume_bindings.glsl's gradientTex
-constexpr GLuint kPhotonBinding = 4;
-constexpr GLuint kDepositBinding = 5;
-constexpr GLuint kTotalsBinding = 6;
-constexpr GLuint kReceiverBinding = 7;
-constexpr GLuint kRoundBinding = 9;
-constexpr GLuint kExtinguishedBinding = 10;
 constexpr int kLocalSize = EK_ROUND_GROUP;
 constexpr int kDepositChannels = 6;  // r, g, b, weighted direction x, y, z
 // escaped rgb, extinguished rgb, dropped rgb, steps, cut, received rgb
@@ -153,17 +144,17 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
 
     if (timer) timer->begin("photons");
     fields.bind();
-    glActiveTexture(GL_TEXTURE0 + kGradientUnit);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
     glBindTexture(GL_TEXTURE_3D, refraction.gradientTexture());
-    glActiveTexture(GL_TEXTURE0 + kOctreeUnit);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_OCTREE);
     glBindTexture(GL_TEXTURE_3D, refraction.octreeTexture());
     glActiveTexture(GL_TEXTURE0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPhotonBinding, photons_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepositBinding, deposits_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTotalsBinding, totals_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kReceiverBinding, receiverDeposits_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRoundBinding, rounds_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kExtinguishedBinding, extinguished_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTONS, photons_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_DEPOSITS, deposits_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_TOTALS, totals_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_DEPOSITS, receiverDeposits_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_ROUNDS, rounds_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_EXTINGUISHED, extinguished_);
 
     // Step 4: generate every light's photons, in the layouts the plan chose on the host.
     generate_->use();

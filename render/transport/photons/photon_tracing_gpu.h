@@ -25,11 +25,11 @@ public:
 
     // Generates and traces the photons of every light of setup (planPhotons). fields are the
     // field volumes (already uploaded), refraction the ∇n and octree volumes already computed
-    // from them, and the params SSBO is already bound at binding 0. Reads the generated photons
-    // back once (the emitted power sets the fixed-point scales before anything is deposited, as
-    // in the CPU twin), then marches them in rounds with the active photons compacted on the GPU
-    // (shared/photon_rounds.h) without reading anything back; the results stay on the GPU until
-    // download(). Timer stage: "photons".
+    // from them, and the params SSBO is already bound at EK_SSBO_VIEW_PARAMS. Reads the generated
+    // photons back once (the emitted power sets the fixed-point scales before anything is
+    // deposited, as in the CPU twin), then marches them in rounds with the active photons compacted
+    // on the GPU (shared/photon_rounds.h) without reading anything back; the results stay on the
+    // GPU until download(). Timer stage: "photons".
     void trace(const ViewSetup& setup, VolumeTextures& fields,
                const RefractionVolumesGpu& refraction, const PhotonSettings& settings = {},
                GpuStageTimer* timer = nullptr);

@@ -65,8 +65,8 @@ void PhotonTransport::configure(const Scene& scene, ViewSetup& setup) {
     if (!sceneScatters(scene) && scene.receivers.empty()) return;
     shared::GpuViewParams& p = setup.params;
     // Every light type emits photons (shaders/shared/photons.h).
-    for (size_t l = 0; l < scene.lights.size(); ++l) p.pipeline.z |= 1 << l;
-    p.pipeline.y = p.pipeline.z != 0 ? 1 : 0;
+    for (size_t l = 0; l < scene.lights.size(); ++l) shared::setLightInFluence(p, int(l));
+    shared::setReadsFluence(p, shared::anyLightInFluence(p));
 }
 
 PhotonSettings PhotonTransport::traceSettings() const {
@@ -79,10 +79,10 @@ PhotonSettings PhotonTransport::traceSettings() const {
 std::vector<unsigned char> PhotonTransport::cacheKey(
     const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const {
     const shared::GpuViewParams& p = setup.params;
-    if (p.pipeline.y == 0) return {};
+    if (!shared::readsFluence(p)) return {};
     std::vector<unsigned char> key = transportInputsKey(setup, slotGrids);
     // Photons stop on receivers and fill their maps.
-    for (int r = 0; r < p.pipeline.w; ++r) {
+    for (int r = 0; r < shared::receiverCount(p); ++r) {
         appendBytes(key, &p.receivers[r].plane, sizeof(glm::vec4));
         appendBytes(key, &p.receivers[r].texels, sizeof(glm::ivec4));
     }

@@ -1,0 +1,60 @@
+// Every binding point of the GPU passes, named once for both sides: the shaders write
+// `layout(binding = EK_...)` (GLSL takes a constant expression there) and the host binds with the
+// same names (glActiveTexture(GL_TEXTURE0 + EK_UNIT_...), glBindImageTexture(EK_IMAGE_...),
+// glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_...)). Only #defines: C++ and GLSL read this
+// file as it is.
+//
+// Three name spaces, each numbered on its own by GL:
+//   EK_UNIT_*   texture units (sampler bindings);
+//   EK_IMAGE_*  image units (image3D / image2D bindings);
+//   EK_SSBO_*   shader storage buffer bindings.
+// A number shared by two names below belongs to passes that never run at the same time: each pass
+// binds what it declares before it dispatches. Where a pass writes a texture through an image
+// unit, that texture must not stay bound to a texture unit the same pass samples (the hosts
+// unbind it; render/transport/light_volumes/light_volume_gpu.cpp, photon_radiance_gpu.cpp).
+#ifndef EIKON_SHARED_BINDINGS_H
+#define EIKON_SHARED_BINDINGS_H
+
+// ---- Texture units ----------------------------------------------------------------------------
+// The volume passes (shaders/volume_bindings.glsl): one 3D texture per kind of volume, so that
+// every fetch of a kind goes through one sampler (see there).
+#define EK_UNIT_FIELDS 0  // R32F: the field volumes, EK_MAX_MATERIALS slots stacked in z
+#define EK_UNIT_LIGHT_TRANSMITTANCE 1  // RGBA32F: one transmittance volume per light, stacked in z
+#define EK_UNIT_GRADIENT 2             // RGBA32F: xyz = ∇n, w = n (curved rays, photons)
+#define EK_UNIT_OCTREE 3               // RGBA32F: the photon march's octree (photon_trace.comp)
+#define EK_UNIT_PHOTON_RADIANCE 4      // RGBA32F: the smoothed photon volume, rgb = Σ flux·length
+#define EK_UNIT_PHOTON_DIRECTION 5     // RGBA32F: xyz = Σ luminance-weighted direction
+#define EK_UNIT_ENVIRONMENT 6          // RGBA32F 2D: the equirectangular environment image
+// The display pass (shaders/display.frag), a graphics program of its own.
+#define EK_UNIT_DISPLAY_IMAGE 0  // RGBA32F 2D: the linear image shown
+
+// ---- Image units ------------------------------------------------------------------------------
+#define EK_IMAGE_VIEW_OUTPUT 0          // view_straight.comp: the rendered image (RGBA32F 2D)
+#define EK_IMAGE_LIGHT_TRANSMITTANCE 1  // light_march.comp, light_sweep.comp: all lights, stacked
+#define EK_IMAGE_GRADIENT 2             // refraction_gradient.comp writes, octree_minmax.comp reads
+#define EK_IMAGE_OCTREE 2               // octree_label.comp writes
+#define EK_IMAGE_PHOTON_RADIANCE_RAW 1  // photon_resolve.comp writes the unsmoothed volumes
+#define EK_IMAGE_PHOTON_DIRECTION_RAW 2
+#define EK_IMAGE_SMOOTH_SOURCE 1  // smooth_volume.comp reads (RGBA32F)
+#define EK_IMAGE_SMOOTH_TARGET 2  //   and writes
+#define EK_IMAGE_BLUR_SOURCE 1    // gaussian_blur.comp reads (R32F)
+#define EK_IMAGE_BLUR_TARGET 2    //   and writes
+#define EK_IMAGE_COVERAGE 1       // voxelize_coverage.comp writes (R32F)
+
+// ---- Shader storage buffers -------------------------------------------------------------------
+#define EK_SSBO_VIEW_PARAMS 0        // GpuViewParams (render/params_buffer.cpp), every volume pass
+#define EK_SSBO_OCTREE_PYRAMID 3     // octree_minmax.comp, octree_label.comp: the min/max pyramid
+#define EK_SSBO_PHOTONS 4            // photon_trace.comp: every photon's state
+#define EK_SSBO_PHOTON_DEPOSITS 5    // photon_trace.comp adds, photon_resolve.comp reads
+#define EK_SSBO_PHOTON_TOTALS 6      // photon_trace.comp: escaped, extinguished, ... (int64 pairs)
+#define EK_SSBO_RECEIVER_DEPOSITS 7  // photon_trace.comp: flux per receiver map texel
+#define EK_SSBO_RECEIVER_MAP 8       // view_straight.comp: irradiance per receiver map texel
+#define EK_SSBO_PHOTON_ROUNDS 9      // photon_trace.comp, photon_round.comp: rounds and lists
+#define EK_SSBO_PHOTON_EXTINGUISHED 10  // photon_trace.comp: flux lost so far, per photon
+// The voxelizer's passes (voxelize_*.comp) run apart from the volume passes: binding 0 is theirs
+// until render/params_buffer.cpp binds the parameters again before the next volume pass.
+#define EK_SSBO_VOXELIZE_POSITIONS 0  // voxelize_toggle.comp: vertex positions
+#define EK_SSBO_VOXELIZE_TRIANGLES 1  // voxelize_toggle.comp: vertex indices
+#define EK_SSBO_VOXELIZE_BITS 2       // voxelize_*.comp: the inside bits of the fine columns
+
+#endif
