@@ -23,6 +23,7 @@
 #include "core/scene_meshes.h"
 #include "core/scene_receivers.h"
 #include "core/scene_simulation.h"
+#include "shaders/shared/gpu_types.h"
 
 namespace eikon {
 
@@ -36,9 +37,9 @@ using scene_detail::formatVec3;
 using scene_detail::resolveAgainst;
 
 // Limits of the format (docs/scene-format.md). Materials and lights are capped because the GPU
-// stages keep them in fixed-size uniform arrays.
-constexpr std::size_t kMaxMaterials = 4;
-constexpr std::size_t kMaxLights = 4;
+// stages keep them in the fixed-size arrays of the parameter block (shaders/shared/gpu_types.h).
+constexpr std::size_t kMaxMaterials = EK_MAX_MATERIALS;
+constexpr std::size_t kMaxLights = EK_MAX_LIGHTS;
 constexpr int kMaxVolumeResolution = 1024;
 constexpr int kMinMaxResolution = 8;
 constexpr int kMaxImageSize = 16384;

@@ -5,11 +5,12 @@
 
 #include "core/json_reader.h"
 #include "core/scene.h"
+#include "shaders/shared/gpu_types.h"
 
 namespace eikon {
 
-// At most this many receivers (the GPU parameter block has room for EK_MAX_RECEIVERS).
-constexpr std::size_t kMaxReceivers = 4;
+// At most as many receivers as the GPU parameter block has room for.
+constexpr std::size_t kMaxReceivers = EK_MAX_RECEIVERS;
 
 std::vector<ReceiverSpec> readReceivers(const json::Value& value);
 
