@@ -137,8 +137,8 @@ TransportStats PhotonTransport::stats() const {
     return s;
 }
 
-PhotonRadianceCpu PhotonTransport::volumes() const {
-    if (device_.gpu) return gpu_ ? gpu_->download() : PhotonRadianceCpu{};
+PhotonVolumes PhotonTransport::volumes() const {
+    if (device_.gpu) return gpu_ ? gpu_->download() : PhotonVolumes{};
     return cpu_;
 }
 
