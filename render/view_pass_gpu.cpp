@@ -12,9 +12,8 @@ namespace eikon {
 
 ViewPassGpu::ViewPassGpu(bool hardwareTrilinear)
     : program_(std::make_unique<ShaderProgram>(ShaderProgram::compute(
-          "view_straight.comp", hardwareTrilinear
-                                    ? std::vector<std::string>{"EK_HARDWARE_TRILINEAR"}
-                                    : std::vector<std::string>{}))) {}
+          "view.comp", hardwareTrilinear ? std::vector<std::string>{"EK_HARDWARE_TRILINEAR"}
+                                         : std::vector<std::string>{}))) {}
 
 ViewPassGpu::~ViewPassGpu() {
     if (outputTexture_) glDeleteTextures(1, &outputTexture_);

@@ -29,7 +29,7 @@
 #define EK_UNIT_DISPLAY_IMAGE 0  // RGBA32F 2D: the linear image shown
 
 // ---- Image units ------------------------------------------------------------------------------
-#define EK_IMAGE_VIEW_OUTPUT 0          // view_straight.comp: the rendered image (RGBA32F 2D)
+#define EK_IMAGE_VIEW_OUTPUT 0          // view.comp: the rendered image (RGBA32F 2D)
 #define EK_IMAGE_LIGHT_TRANSMITTANCE 1  // light_march.comp, light_sweep.comp: all lights, stacked
 #define EK_IMAGE_GRADIENT 2             // refraction_gradient.comp writes, octree_minmax.comp reads
 #define EK_IMAGE_OCTREE 2               // octree_label.comp writes
@@ -48,7 +48,7 @@
 #define EK_SSBO_PHOTON_DEPOSITS 5    // photon_trace.comp adds, photon_resolve.comp reads
 #define EK_SSBO_PHOTON_TOTALS 6      // photon_trace.comp: escaped, extinguished, ... (int64 pairs)
 #define EK_SSBO_RECEIVER_DEPOSITS 7  // photon_trace.comp: flux per receiver map texel
-#define EK_SSBO_RECEIVER_MAP 8       // view_straight.comp: irradiance per receiver map texel
+#define EK_SSBO_RECEIVER_MAP 8       // view.comp: irradiance per receiver map texel
 #define EK_SSBO_PHOTON_ROUNDS 9      // photon_trace.comp, photon_round.comp: rounds and lists
 #define EK_SSBO_PHOTON_EXTINGUISHED 10  // photon_trace.comp: flux lost so far, per photon
 // The voxelizer's passes (voxelize_*.comp) run apart from the volume passes: binding 0 is theirs

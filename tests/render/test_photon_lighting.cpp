@@ -20,7 +20,7 @@
 using eikon::Backend;
 using eikon::FrameRenderer;
 using eikon::Image;
-using eikon::PhotonRadianceCpu;
+using eikon::PhotonVolumes;
 using eikon::Scene;
 using eikon::test::backendName;
 using eikon::test::boxSource;
@@ -96,8 +96,8 @@ TEST_CASE("photon lighting: GPU volumes and image equal the CPU twin's", "[photo
     FrameRenderer cpu(scene, Backend::Cpu);
     const Image gpuImage = gpu.render(0);
     const Image cpuImage = cpu.render(0);
-    const PhotonRadianceCpu g = eikon::test::photonVolumesOf(gpu);
-    const PhotonRadianceCpu c = eikon::test::photonVolumesOf(cpu);
+    const PhotonVolumes g = eikon::test::photonVolumesOf(gpu);
+    const PhotonVolumes c = eikon::test::photonVolumesOf(cpu);
     REQUIRE(c.photonsTraced > 0);
     CHECK(g.photonsTraced == c.photonsTraced);
     CHECK(gpu.lastTransportStats().particlesTraced == c.photonsTraced);
@@ -150,7 +150,7 @@ TEST_CASE("photon lighting: a camera move traces no photons, a light change does
         const int64_t steps = renderer.transportSteps();
         REQUIRE(steps > 0);
         // The counts --stats prints, against the trace's own.
-        const PhotonRadianceCpu traced = eikon::test::photonVolumesOf(renderer);
+        const PhotonVolumes traced = eikon::test::photonVolumesOf(renderer);
         CHECK(renderer.lastTransportStats().rounds == traced.rounds);
         CHECK(traced.rounds > 0);
         CHECK(renderer.lastTransportStats().particlesCut == traced.photonsCut);

@@ -26,7 +26,7 @@
 using eikon::Backend;
 using eikon::FrameRenderer;
 using eikon::Image;
-using eikon::PhotonRadianceCpu;
+using eikon::PhotonVolumes;
 using eikon::ReceiverMethod;
 using eikon::ReceiverSpec;
 using eikon::Scene;
@@ -140,7 +140,7 @@ TEST_CASE("receivers: the plane map is flat, sums to the received flux and balan
     const Scene scene = litFloor(ReceiverMethod::Plane, "photons");
     FrameRenderer renderer(scene, Backend::Cpu);
     renderer.render(0);
-    const PhotonRadianceCpu photons = eikon::test::photonVolumesOf(renderer);
+    const PhotonVolumes photons = eikon::test::photonVolumesOf(renderer);
     const eikon::ViewSetup setup = setupOf(scene, renderer);
     REQUIRE(photons.receiverMap.size() == eikon::receiverMapTexels(setup.params));
     REQUIRE(photons.receiverMap.size() == 64u * 64u);
@@ -184,8 +184,8 @@ TEST_CASE("receivers: GPU map and image equal the CPU twin's", "[receivers][gpu]
     FrameRenderer cpu(scene, Backend::Cpu);
     const Image gpuImage = gpu.render(0);
     const Image cpuImage = cpu.render(0);
-    const PhotonRadianceCpu g = eikon::test::photonVolumesOf(gpu);
-    const PhotonRadianceCpu c = eikon::test::photonVolumesOf(cpu);
+    const PhotonVolumes g = eikon::test::photonVolumesOf(gpu);
+    const PhotonVolumes c = eikon::test::photonVolumesOf(cpu);
     REQUIRE(c.receiverMap.size() == g.receiverMap.size());
     REQUIRE_FALSE(c.receiverMap.empty());
     for (int ch = 0; ch < 3; ++ch) CHECK(g.totals.received[ch] == c.totals.received[ch]);
@@ -227,7 +227,7 @@ TEST_CASE("receivers: the plane map draws a shadow edge sharper than the voxel f
     scene.materials.push_back(material("block", "kappa", glm::vec3(20.0f)));
     FrameRenderer renderer(scene, Backend::Cpu);
     renderer.render(0);
-    const PhotonRadianceCpu photons = eikon::test::photonVolumesOf(renderer);
+    const PhotonVolumes photons = eikon::test::photonVolumesOf(renderer);
     eikon::ViewSetup setup = setupOf(scene, renderer);
 
     // Both methods through the view pass's own function, on the same photons.

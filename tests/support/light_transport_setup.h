@@ -39,9 +39,9 @@ inline const char* shadowName(ShadowMode m) {
 }
 
 // The smoothed photon volumes of the renderer's last photon run (the GPU's read back).
-inline PhotonRadianceCpu photonVolumesOf(const FrameRenderer& renderer) {
+inline PhotonVolumes photonVolumesOf(const FrameRenderer& renderer) {
     const auto* photons = dynamic_cast<const PhotonTransport*>(&renderer.lightTransport());
-    return photons ? photons->volumes() : PhotonRadianceCpu{};
+    return photons ? photons->volumes() : PhotonVolumes{};
 }
 
 }  // namespace eikon::test

@@ -27,7 +27,9 @@ class ShaderProgram;
 class VolumeSmootherGpu;
 class VolumeTextures;
 
-struct PhotonRadianceCpu {
+// The smoothed photon volumes, the receiver map and the trace's totals: what the CPU twin computes,
+// and what PhotonRadianceGpu::download reads back from a GPU run.
+struct PhotonVolumes {
     std::vector<glm::vec4> radiance;     // smoothed; rgb = Σ flux·length (see photon_tracing.h)
     std::vector<glm::vec4> direction;    // smoothed; xyz = Σ luminance-weighted direction
     std::vector<glm::vec4> receiverMap;  // irradiance per receiver texel (render/receiver_map.h)
@@ -39,11 +41,11 @@ struct PhotonRadianceCpu {
 };
 
 // CPU twin: traceLightPhotonsCpu, then smoothVolumeCpu of both volumes.
-PhotonRadianceCpu computePhotonRadianceCpu(const ViewSetup& setup,
-                                           const std::vector<const DenseGrid*>& slotGrids,
-                                           const RefractionVolumeCpu& gradient,
-                                           const RefractionVolumeCpu& octree,
-                                           const PhotonSettings& settings);
+PhotonVolumes computePhotonRadianceCpu(const ViewSetup& setup,
+                                       const std::vector<const DenseGrid*>& slotGrids,
+                                       const RefractionVolumeCpu& gradient,
+                                       const RefractionVolumeCpu& octree,
+                                       const PhotonSettings& settings);
 
 class PhotonRadianceGpu {
 public:
@@ -70,7 +72,7 @@ public:
     int64_t lastPhotonsCut() const;
     int lastRounds() const;
     // The smoothed volumes and the trace's totals, for tests.
-    PhotonRadianceCpu download() const;
+    PhotonVolumes download() const;
 
 private:
     void allocate(glm::ivec3 resolution);

@@ -3,13 +3,13 @@
 
 namespace eikon {
 
-PhotonRadianceCpu computePhotonRadianceCpu(const ViewSetup& setup,
-                                           const std::vector<const DenseGrid*>& slotGrids,
-                                           const RefractionVolumeCpu& gradient,
-                                           const RefractionVolumeCpu& octree,
-                                           const PhotonSettings& settings) {
+PhotonVolumes computePhotonRadianceCpu(const ViewSetup& setup,
+                                       const std::vector<const DenseGrid*>& slotGrids,
+                                       const RefractionVolumeCpu& gradient,
+                                       const RefractionVolumeCpu& octree,
+                                       const PhotonSettings& settings) {
     PhotonResultCpu traced = traceLightPhotonsCpu(setup, slotGrids, gradient, octree, settings);
-    PhotonRadianceCpu out;
+    PhotonVolumes out;
     out.radiance = smoothVolumeCpu(traced.radiance, traced.resolution);
     out.direction = smoothVolumeCpu(traced.direction, traced.resolution);
     out.totals = traced.totals;

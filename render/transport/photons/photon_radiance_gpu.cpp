@@ -126,9 +126,9 @@ int64_t PhotonRadianceGpu::lastSteps() const {
     return tracer_->stepsTaken();
 }
 
-PhotonRadianceCpu PhotonRadianceGpu::download() const {
+PhotonVolumes PhotonRadianceGpu::download() const {
     const PhotonResultCpu traced = tracer_->download();
-    PhotonRadianceCpu out;
+    PhotonVolumes out;
     out.radiance = downloadVolume(smoothed_[0], resolution_);
     out.direction = downloadVolume(smoothed_[1], resolution_);
     out.totals = traced.totals;

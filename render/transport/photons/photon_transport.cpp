@@ -142,8 +142,8 @@ std::optional<EnergyBalance> PhotonTransport::energy() const {
     return EnergyBalance{t.emitted, t.extinguished, t.escaped, t.dropped, t.received};
 }
 
-PhotonRadianceCpu PhotonTransport::volumes() const {
-    if (device_.gpu) return gpu_ ? gpu_->download() : PhotonRadianceCpu{};
+PhotonVolumes PhotonTransport::volumes() const {
+    if (device_.gpu) return gpu_ ? gpu_->download() : PhotonVolumes{};
     return cpu_;
 }
 

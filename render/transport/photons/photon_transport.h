@@ -50,13 +50,13 @@ public:
     // an animation, and a frame change alone traces nothing.
     PhotonSettings traceSettings() const;
     // The smoothed volumes and totals of the last run (a GPU run's read back), for tests.
-    PhotonRadianceCpu volumes() const;
+    PhotonVolumes volumes() const;
 
 private:
     PhotonTransportSettings settings_;
     TransportDevice device_;
     uint32_t seed_ = 0;  // the scene's render.seed, from configure()
-    PhotonRadianceCpu cpu_;
+    PhotonVolumes cpu_;
     std::unique_ptr<PhotonRadianceGpu> gpu_;
 };
 

@@ -1,5 +1,6 @@
 #version 430 core
-// Straight-ray viewing pass (render/view_pass_gpu.cpp): one invocation per pixel.
+// The viewing pass (render/view_pass_gpu.cpp): one invocation per pixel, its ray straight or, when
+// curvedRays(params), bent through the ∇n volume (shaders/shared/view_march.h).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "volume_bindings.glsl"
