@@ -12,8 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <epoxy/gl.h>
-
 #include "apps/bench_report.h"
 #include "apps/commands.h"
 #include "core/error.h"
@@ -132,14 +130,12 @@ int runBenchVoxelize(BenchVoxelizeOptions o) {
 
     std::unique_ptr<GlContext> context;
     std::unique_ptr<MeshVoxelizerGpu> voxelizer;
-    unsigned texture = 0;
+    std::unique_ptr<CoverageTextureGpu> target;  // released before the context
     if (gpu) {
         context = createHeadlessContext();
         std::printf("# GPU: %s\n", context->rendererName().c_str());
         voxelizer = std::make_unique<MeshVoxelizerGpu>();
-        glGenTextures(1, &texture);
-        glBindTexture(GL_TEXTURE_3D, texture);
-        glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, o.resolution, o.resolution, o.resolution);
+        target = std::make_unique<CoverageTextureGpu>(volume.resolution);
     }
     std::printf("%-20s %9s %-8s | %12s %12s %9s | %12s %12s\n", "mesh", "triangles", "backend",
                 "voxelize ms", "(min)", "blur ms", "err vs 4/3pi", "err vs poly");
@@ -169,20 +165,17 @@ int runBenchVoxelize(BenchVoxelizeOptions o) {
         }
         if (gpu) {
             const auto vox = timeRuns(o.reps, [&] {
-                voxelizer->voxelize(m.mesh, volume, texture);
-                glFinish();
+                voxelizer->voxelize(m.mesh, volume, target->texture());
+                context->finish();
             });
-            std::vector<float> coverage(volume.voxelCount());
-            glBindTexture(GL_TEXTURE_3D, texture);
-            glGetTexImage(GL_TEXTURE_3D, 0, GL_RED, GL_FLOAT, coverage.data());
+            const std::vector<float> coverage = target->download();
             const auto blur = timeRuns(o.reps, [&] {
-                voxelizer->blur(texture, volume.resolution, IndexBlurSettings{});
-                glFinish();
+                voxelizer->blur(target->texture(), volume.resolution, IndexBlurSettings{});
+                context->finish();
             });
             report("gpu", vox, blur, coverage);
         }
     }
-    if (texture) glDeleteTextures(1, &texture);
     return 0;
 }
 

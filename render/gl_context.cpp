@@ -495,6 +495,10 @@ void GlContext::initialize(const std::string& where) {
     }
 }
 
+void GlContext::finish() const {
+    glFinish();
+}
+
 std::unique_ptr<GlContext> createHeadlessContext() {
     requireLibraries();
     // Client extensions come from EGL_NO_DISPLAY; null means EGL 1.4 without client extensions.

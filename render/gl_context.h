@@ -1,7 +1,8 @@
 #pragma once
 // OpenGL 4.3 core contexts: headless through EGL (rendering, tests, CI on Mesa llvmpipe) and a
-// GLFW window for the interactive viewer. Function loading goes through libepoxy, so callers
-// include <epoxy/gl.h> and call GL directly once a context is current.
+// GLFW window for the interactive viewer. Function loading goes through libepoxy, so callers in
+// render/ include <epoxy/gl.h> and call GL directly once a context is current; apps/ includes no
+// GL header (scripts/check-layering.sh) and goes through render/ instead.
 //
 // Every failure (no EGL, no display, driver below 4.3, missing extension) is an eikon::Error with
 // a reason that says what was found and what to install, never a crash: machines without GL 4.3
@@ -49,6 +50,10 @@ public:
     const GlLimits& limits() const { return limits_; }
     // True when GL_KHR_debug messages are routed to logWarning (debug builds, EIKON_GL_DEBUG=1).
     bool debugOutput() const { return debugOutput_; }
+
+    // Waits until the GPU has finished every command issued so far (glFinish), so that a
+    // wall-clock time includes the work; the context must be current.
+    void finish() const;
 
 protected:
     GlContext() = default;

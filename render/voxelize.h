@@ -31,6 +31,26 @@ struct IndexBlurSettings {
 std::vector<float> blurCoverageCpu(const std::vector<float>& coverage, glm::ivec3 res,
                                    const IndexBlurSettings& settings);
 
+// An R32F 3D texture of coverage that the voxelizer writes and blurs on the GPU, and its read-back,
+// for callers that keep the coverage there between the two (`eikon bench voxelize` times each
+// on one). Needs a current GL context for its whole life.
+class CoverageTextureGpu {
+public:
+    explicit CoverageTextureGpu(glm::ivec3 resolution);
+    ~CoverageTextureGpu();
+    CoverageTextureGpu(const CoverageTextureGpu&) = delete;
+    CoverageTextureGpu& operator=(const CoverageTextureGpu&) = delete;
+
+    unsigned texture() const { return texture_; }
+    glm::ivec3 resolution() const { return resolution_; }
+    // The coverage, x fastest like DenseGrid.
+    std::vector<float> download() const;
+
+private:
+    unsigned texture_ = 0;
+    glm::ivec3 resolution_;
+};
+
 class MeshVoxelizerGpu {
 public:
     MeshVoxelizerGpu();
@@ -40,7 +60,7 @@ public:
 
     // Writes the mesh's coverage into `target`, an R32F 3D texture of volume.resolution.
     void voxelize(const TriangleMesh& mesh, const RenderVolume& volume, unsigned target);
-    // The same, read back into host memory (x fastest), through a texture the voxelizer keeps.
+    // The same, read back into host memory (x fastest), through a CoverageTextureGpu it keeps.
     std::vector<float> voxelizeToHost(const TriangleMesh& mesh, const RenderVolume& volume);
     // Blurs R32F `texture` in place (through an internal scratch texture of the same size).
     void blur(unsigned texture, glm::ivec3 res, const IndexBlurSettings& settings);
@@ -53,8 +73,7 @@ private:
     size_t bitWords_ = 0;  // the size bits_ was allocated for
     unsigned scratch_ = 0;
     glm::ivec3 scratchRes_{0};
-    unsigned hostTarget_ = 0;
-    glm::ivec3 hostTargetRes_{0};
+    std::unique_ptr<CoverageTextureGpu> hostTarget_;
 };
 
 }  // namespace eikon

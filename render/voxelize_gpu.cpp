@@ -29,6 +29,23 @@ GLuint groups(size_t count, int size) {
 
 }  // namespace
 
+CoverageTextureGpu::CoverageTextureGpu(glm::ivec3 resolution) : resolution_(resolution) {
+    glGenTextures(1, &texture_);
+    glBindTexture(GL_TEXTURE_3D, texture_);
+    glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, resolution.x, resolution.y, resolution.z);
+}
+
+CoverageTextureGpu::~CoverageTextureGpu() {
+    if (texture_) glDeleteTextures(1, &texture_);
+}
+
+std::vector<float> CoverageTextureGpu::download() const {
+    std::vector<float> out(size_t(resolution_.x) * size_t(resolution_.y) * size_t(resolution_.z));
+    glBindTexture(GL_TEXTURE_3D, texture_);
+    glGetTexImage(GL_TEXTURE_3D, 0, GL_RED, GL_FLOAT, out.data());
+    return out;
+}
+
 MeshVoxelizerGpu::MeshVoxelizerGpu()
     : toggle_(std::make_unique<ShaderProgram>(ShaderProgram::compute("voxelize_toggle.comp"))),
       scan_(std::make_unique<ShaderProgram>(ShaderProgram::compute("voxelize_scan.comp"))),
@@ -40,24 +57,16 @@ MeshVoxelizerGpu::~MeshVoxelizerGpu() {
     for (GLuint b : buffers)
         if (b) glDeleteBuffers(1, &b);
     if (scratch_) glDeleteTextures(1, &scratch_);
-    if (hostTarget_) glDeleteTextures(1, &hostTarget_);
 }
 
 std::vector<float> MeshVoxelizerGpu::voxelizeToHost(const TriangleMesh& mesh,
                                                     const RenderVolume& volume) {
-    const glm::ivec3 res = volume.resolution;
-    if (!hostTarget_ || hostTargetRes_ != res) {
-        if (hostTarget_) glDeleteTextures(1, &hostTarget_);
-        glGenTextures(1, &hostTarget_);
-        glBindTexture(GL_TEXTURE_3D, hostTarget_);
-        glTexStorage3D(GL_TEXTURE_3D, 1, GL_R32F, res.x, res.y, res.z);
-        hostTargetRes_ = res;
+    if (!hostTarget_ || hostTarget_->resolution() != volume.resolution) {
+        hostTarget_.reset();
+        hostTarget_ = std::make_unique<CoverageTextureGpu>(volume.resolution);
     }
-    voxelize(mesh, volume, hostTarget_);
-    std::vector<float> out(volume.voxelCount());
-    glBindTexture(GL_TEXTURE_3D, hostTarget_);
-    glGetTexImage(GL_TEXTURE_3D, 0, GL_RED, GL_FLOAT, out.data());
-    return out;
+    voxelize(mesh, volume, hostTarget_->texture());
+    return hostTarget_->download();
 }
 
 void MeshVoxelizerGpu::voxelize(const TriangleMesh& mesh, const RenderVolume& volume,

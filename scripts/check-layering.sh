@@ -16,11 +16,13 @@
 # A library may use what lies below it, so sim may include shaders/shared as core does.
 #
 # GL: <epoxy/...>, <EGL/...>, <GL/...>, <GLFW/...> are forbidden in core, sim and shaders/shared,
-# and core/sim CMakeLists may neither find nor link OpenGL, EGL, epoxy or GLFW. apps may: the
-# viewer's window is render's GlfwWindowContext, but its event loop (apps/cmd_view.cpp) polls GLFW
-# for keys and the mouse, and `eikon bench voxelize` reads a GL texture back, and apps is the top
-# layer. The root CMakeLists.txt finds those packages once for both render and apps (imported
-# targets are visible only below the folder that found them), so it is not checked.
+# and core/sim CMakeLists may neither find nor link OpenGL, EGL, epoxy or GLFW. Every GL call lives
+# in render: apps may include GLFW alone, because the viewer's window is render's
+# GlfwWindowContext but its event loop (apps/cmd_view.cpp) polls GLFW for keys and the mouse; an
+# <epoxy/...>, <EGL/...> or <GL/...> include in apps fails, and so does linking OpenGL, EGL or
+# epoxy in apps/CMakeLists.txt. The root CMakeLists.txt finds those packages once for both render
+# and apps (imported targets are visible only below the folder that found them), so it is not
+# checked.
 #
 # Usage: scripts/check-layering.sh [ROOT]   (ROOT defaults to this repository)
 set -euo pipefail
@@ -36,6 +38,7 @@ declare -A MAY_INCLUDE=(
     [shaders]="shaders shaders/shared"
 )
 GL_HEADER='^(epoxy|EGL|GL|GLES[0-9]*|GLFW|KHR)/'
+APPS_GL_HEADER='^(epoxy|EGL|GL|GLES[0-9]*|KHR)/' # GLFW stays allowed: the viewer's events
 violations=0
 
 # Sets `lib` to the library that owns a repository-relative path, or empty outside the project.
@@ -98,7 +101,11 @@ while IFS= read -r hit; do
         # System headers are fine, except the GL ones below render.
         if [[ "$owner" =~ ^(core|sim|shaders/shared)$ && "$name" =~ $GL_HEADER ]]; then
             violation "$file:$line: $owner must not include <$name> ($owner may include:" \
-                "${MAY_INCLUDE[$owner]}; GL headers only in render and apps)"
+                "${MAY_INCLUDE[$owner]}; GL headers only in render, and GLFW in apps)"
+        fi
+        if [[ "$owner" == apps && "$name" =~ $APPS_GL_HEADER ]]; then
+            violation "$file:$line: apps must not include <$name> (GL calls belong in render;" \
+                "apps may include <GLFW/...> only, for the viewer's events)"
         fi
         continue
     fi
@@ -121,13 +128,15 @@ declare -A MUST_NOT_LINK=(
     [core]='^(eikon_sim|eikon_render)$|epoxy|egl|opengl|glfw|glew'
     [sim]='^eikon_render$|epoxy|egl|opengl|glfw|glew'
     [render]='^eikon_sim$'
+    [apps]='epoxy|egl|opengl|glew'
 )
 declare -A MAY_LINK=(
     [core]="no other eikon library, no OpenGL/EGL/epoxy/GLFW"
     [sim]="eikon_core, no OpenGL/EGL/epoxy/GLFW"
     [render]="eikon_core, OpenGL/EGL/epoxy/GLFW"
+    [apps]="every eikon library and GLFW, no OpenGL/EGL/epoxy"
 )
-for owner in core sim render; do
+for owner in core sim render apps; do
     cmake_file="$owner/CMakeLists.txt"
     [ -f "$cmake_file" ] || continue
     # Each find/link command as "line<TAB>arguments", joined over its continuation lines.

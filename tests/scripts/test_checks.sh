@@ -44,6 +44,7 @@ planted=()
 # The first source of a library in the copy, so that renames elsewhere do not break the test.
 first_cpp() { (cd "$TREE" && find "$1" -maxdepth 1 -name '*.cpp' | sort | head -n 1); }
 core_cpp="$(first_cpp core)" sim_cpp="$(first_cpp sim)" render_cpp="$(first_cpp render)"
+apps_cpp="$(first_cpp apps)"
 
 # ---- layering -------------------------------------------------------------------------------
 expect "layering passes on the tree" layering 0 \
@@ -72,6 +73,22 @@ restore
 plant sim/CMakeLists.txt 'target_link_libraries(eikon_sim PRIVATE eikon_render)'
 expect "sim linking eikon_render fails" layering 1 \
     "eikon: sim/CMakeLists.txt:2: sim must not link eikon_render .*"
+restore
+
+# apps makes no GL call of its own: GL headers fail there, GLFW (the viewer's events) passes.
+plant "$apps_cpp" '#include <epoxy/gl.h>'
+expect "apps including a GL header fails" layering 1 \
+    "eikon: $apps_cpp:2: apps must not include <epoxy/gl.h> .*"
+restore
+
+plant "$apps_cpp" '#include <GLFW/glfw3.h>'
+expect "apps including GLFW passes" layering 0 \
+    'layering: [0-9]+ files, no include crosses the library direction'
+restore
+
+plant apps/CMakeLists.txt 'target_link_libraries(eikon PRIVATE PkgConfig::EPOXY)'
+expect "apps linking epoxy fails" layering 1 \
+    "eikon: apps/CMakeLists.txt:2: apps must not link PkgConfig::EPOXY .*"
 restore
 
 # ---- format ---------------------------------------------------------------------------------
