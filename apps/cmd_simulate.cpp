@@ -1,5 +1,6 @@
-// `eikon simulate scene.json`: steps the scene's smoke simulation frame by frame and writes each
-// frame as <dir>/<name>_####.vdb (density, temperature, staggered velocity), a cache that
+// `eikon simulate scene.json`: steps the scene's smoke simulation (each of its domains) frame by
+// frame and writes each frame as <dir>/<name>_####.vdb (density, temperature, staggered velocity;
+// one file per domain, <name> carrying the domain's label), a cache that
 // `eikon info` reads and a "vdb_sequence" source renders. Each file is written atomically after
 // its frame, so a blow-up keeps every frame before it and leaves no partial file.
 #include <chrono>
@@ -7,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "apps/commands.h"
 #include "apps/frame_files.h"
@@ -34,12 +36,11 @@ int runSimulate(const SimulateOptions& o) {
     // The whole scene is checked before any work, the render settings the methods read too: a
     // typo there fails now, not after the simulation when the cache is rendered.
     checkLightTransport(scene);
-    if (!scene.simulation) {
+    if (scene.simulations.empty()) {
         throw Error(o.scene,
                     "no \"simulation\" section: nothing to simulate "
                     "(see docs/scene-format.md#simulation)");
     }
-    const SmokeSimulationSpec& spec = *scene.simulation;
     // The simulation starts, empty, at the scene's first frame whatever --frames says, so that a
     // frame holds the same smoke however the run was cut.
     const int first = scene.time.frameStart;
@@ -50,48 +51,65 @@ int runSimulate(const SimulateOptions& o) {
                                     std::to_string(first) + "); got first frame " +
                                     std::to_string(written.frameStart));
     }
-    const std::string directory = o.outputDir.empty() ? spec.cacheDirectory : o.outputDir;
-    std::error_code ec;
-    fs::create_directories(directory, ec);
-    if (ec) throw Error(directory, "cannot create the cache folder: " + ec.message());
 
-    // Keyframed sources move at every substep's time on the scene's clock, the clock `eikon render`
-    // evaluates its tracks on, so frame f of the cache is frame f of the render.
-    sim::SmokeSolver solver = sim::smokeSolverFrom(scene);
-    const glm::ivec3 n = spec.resolution;
-    std::printf("smoke %dx%dx%d, voxel %g, %g fps, frames %d-%d -> %s\n", n.x, n.y, n.z,
-                double(spec.voxelSize), scene.time.fps, written.frameStart, written.frameEnd,
-                framePath(directory, spec.cacheName, written.frameStart, "vdb").c_str());
+    // Every domain is a solver of its own with a cache of its own (its cacheName carries its
+    // label). Keyframed sources move at every substep's time on the scene's clock, the clock
+    // `eikon render` evaluates its tracks on, so frame f of the cache is frame f of the render.
+    struct Domain {
+        const SmokeSimulationSpec& spec;
+        std::string directory;
+        sim::SmokeSolver solver;
+    };
+    std::vector<Domain> domains;
+    for (std::size_t d = 0; d < scene.simulations.size(); ++d) {
+        const SmokeSimulationSpec& spec = scene.simulations[d];
+        const std::string directory = o.outputDir.empty() ? spec.cacheDirectory : o.outputDir;
+        std::error_code ec;
+        fs::create_directories(directory, ec);
+        if (ec) throw Error(directory, "cannot create the cache folder: " + ec.message());
+        domains.push_back({spec, directory, sim::smokeSolverFrom(scene, d)});
+        const glm::ivec3 n = spec.resolution;
+        std::printf("smoke%s%s %dx%dx%d, voxel %g, %g fps, frames %d-%d -> %s\n",
+                    spec.label.empty() ? "" : " ", spec.label.c_str(), n.x, n.y, n.z,
+                    double(spec.voxelSize), scene.time.fps, written.frameStart, written.frameEnd,
+                    framePath(directory, spec.cacheName, written.frameStart, "vdb").c_str());
+    }
     FieldRegistry registry;
     const std::vector<std::string> fields = {field::kDensity, field::kTemperature,
                                              field::kVelocity};
     double totalMs = 0.0;
     // Frame f holds the state after f − first + 1 frames of stepping.
-    for (int frame = first; frame <= written.frameEnd; ++frame) {
-        const auto t0 = std::chrono::steady_clock::now();
-        const sim::SmokeStepStats stats = solver.advanceFrame();
-        const bool write = frame >= written.frameStart;
-        std::string path;
-        if (write) {
-            path = framePath(directory, spec.cacheName, frame, "vdb");
-            sim::publishSmoke(solver.grid(), registry, "simulation frame " + std::to_string(frame));
-            exportVdb(path, registry, fields);
+    for (int frame = first; frame <= written.frameEnd; ++frame)
+        for (Domain& domain : domains) {
+            const auto t0 = std::chrono::steady_clock::now();
+            const sim::SmokeStepStats stats = domain.solver.advanceFrame();
+            const bool write = frame >= written.frameStart;
+            std::string path;
+            if (write) {
+                path = framePath(domain.directory, domain.spec.cacheName, frame, "vdb");
+                // Unlabelled grids: the names other tools (and a "vdb_sequence" source) read.
+                sim::publishSmoke(domain.solver.grid(), registry,
+                                  "simulation frame " + std::to_string(frame));
+                exportVdb(path, registry, fields);
+            }
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count();
+            totalMs += ms;
+            // With conserve_mass, the advection's density deficit the correction put back
+            // (relative, the largest of the frame's substeps) and what the bounds left
+            // uncorrected.
+            char mass[96] = "";
+            if (domain.spec.conserveMass)
+                std::snprintf(mass, sizeof mass, ", mass deficit %+.2e corrected (left %+.1e)",
+                              stats.massDeficit, stats.massRemainder);
+            std::printf("frame %d%s%s: %d substeps, %d CG iterations, CFL %.2f%s, %.1f ms%s%s\n",
+                        frame, domain.spec.label.empty() ? "" : " ", domain.spec.label.c_str(),
+                        stats.substeps, stats.cgIterations, stats.cfl, mass, ms,
+                        write ? " -> " : "",
+                        write ? path.c_str() : " (before --frames, not written)");
+            std::fflush(stdout);
         }
-        const double ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                .count();
-        totalMs += ms;
-        // With conserve_mass, the advection's density deficit the correction put back (relative,
-        // the largest of the frame's substeps) and what the bounds left uncorrected.
-        char mass[96] = "";
-        if (spec.conserveMass)
-            std::snprintf(mass, sizeof mass, ", mass deficit %+.2e corrected (left %+.1e)",
-                          stats.massDeficit, stats.massRemainder);
-        std::printf("frame %d: %d substeps, %d CG iterations, CFL %.2f%s, %.1f ms%s%s\n", frame,
-                    stats.substeps, stats.cgIterations, stats.cfl, mass, ms, write ? " -> " : "",
-                    write ? path.c_str() : " (before --frames, not written)");
-        std::fflush(stdout);
-    }
     const int stepped = written.frameEnd - first + 1;
     std::printf("simulated %d frames in %.1f ms (%.1f ms per frame)\n", stepped, totalMs,
                 totalMs / stepped);

@@ -174,22 +174,39 @@ std::optional<AnimationTarget> sourceTarget(int i, const std::string& key, std::
 std::optional<AnimationTarget> simulationTarget(const Scene& scene,
                                                 const std::vector<std::string>& p,
                                                 std::string& why) {
-    if (!scene.simulation) {
+    if (scene.simulations.empty()) {
         why = "the scene has no \"simulation\" section";
         return std::nullopt;
     }
-    if (p.size() != 4 || p[1] != "sources") {
-        why = "expected /simulation/sources/<index>/<key>";
+    // A lone object: /simulation/sources/<i>/<key>; an array: /simulation/<d>/sources/<i>/<key>.
+    const bool lone =
+        scene.simulations.size() == 1 && scene.simulations[0].jsonPath == "/simulation";
+    size_t first = 1;  // where "sources" is in p
+    int domain = 0;
+    if (!lone) {
+        domain = p.size() > 1 ? parseIndex(p[1]) : -1;
+        if (domain < 0 || size_t(domain) >= scene.simulations.size()) {
+            why = "expected /simulation/<domain>/sources/<index>/<key> with a domain below " +
+                  std::to_string(scene.simulations.size());
+            return std::nullopt;
+        }
+        first = 2;
+    }
+    const SmokeSimulationSpec& simulation = scene.simulations[size_t(domain)];
+    if (p.size() != first + 3 || p[first] != "sources") {
+        why = "expected " + simulation.jsonPath + "/sources/<index>/<key>";
         return std::nullopt;
     }
-    const size_t count = scene.simulation->sources.size();
-    const int i = parseIndex(p[2]);
+    const size_t count = simulation.sources.size();
+    const int i = parseIndex(p[first + 1]);
     if (i < 0 || size_t(i) >= count) {
-        why =
-            "no simulation source " + p[2] + " (the simulation has " + std::to_string(count) + ")";
+        why = "no simulation source " + p[first + 1] + " (" + simulation.jsonPath + " has " +
+              std::to_string(count) + ")";
         return std::nullopt;
     }
-    return sourceTarget(i, p[3], why);
+    std::optional<AnimationTarget> target = sourceTarget(i, p[first + 2], why);
+    if (target) target->domain = domain;
+    return target;
 }
 
 // A box source keeps its size and moves so that its centre is at `center`.
@@ -337,19 +354,19 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
             scene.materials[i].g = v[0];
             break;
         case TargetKind::SourceCenter:
-            moveShape(scene.simulation->sources[i].shape, v3);
+            moveShape(scene.simulations[size_t(t.domain)].sources[i].shape, v3);
             break;
         case TargetKind::SourceVelocity:
-            scene.simulation->sources[i].velocity = v3;
+            scene.simulations[size_t(t.domain)].sources[i].velocity = v3;
             break;
         case TargetKind::SourceDensityRate:
-            scene.simulation->sources[i].densityRate = v[0];
+            scene.simulations[size_t(t.domain)].sources[i].densityRate = v[0];
             break;
         case TargetKind::SourceTemperatureRate:
-            scene.simulation->sources[i].temperatureRate = v[0];
+            scene.simulations[size_t(t.domain)].sources[i].temperatureRate = v[0];
             break;
         case TargetKind::SourceVelocityRate:
-            scene.simulation->sources[i].velocityRate = v[0];
+            scene.simulations[size_t(t.domain)].sources[i].velocityRate = v[0];
             break;
     }
 }

@@ -40,9 +40,11 @@ enum class TargetKind {
 
 struct AnimationTarget {
     TargetKind kind = TargetKind::LightIntensity;
-    // mesh, light, material (in Scene::materials) or smoke source (in simulation->sources) index
+    // mesh, light, material (in Scene::materials) or smoke source (in simulations[domain].sources)
+    // index
     int index = 0;
     int handle = 0;  // HandleTranslate, HandleRotation: the handle's index in the deformer
+    int domain = 0;  // Source*: the smoke domain's index in Scene::simulations
     int width = 1;   // numbers per value: 1, 3, or 4 (a quaternion [x, y, z, w])
     double lo = -1e30, hi = 1e30;  // the valid range of each number (quaternions: unit length)
     bool rotation = false;         // a quaternion: slerp, normalized

@@ -68,10 +68,11 @@ RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields,
 
     RenderVolume v;
     if (scene.volume.autoBounds) {
-        // A live simulation starts empty and spreads: its whole domain, so the volume holds still.
+        // A live simulation starts empty and spreads: its whole domains, so the volume holds still.
         for (const SourceSpec& source : scene.sources)
-            if (source.type == SourceType::Simulation && scene.simulation)
-                v.bounds = v.bounds.unite(scene.simulation->domain);
+            if (source.type == SourceType::Simulation)
+                for (const SmokeSimulationSpec& simulation : scene.simulations)
+                    v.bounds = v.bounds.unite(simulation.domain);
         for (size_t m : fieldMaterials)
             v.bounds = v.bounds.unite(materialField(scene, fields, m).activeWorldBounds());
         if (!v.bounds.valid() && !meshes.valid())

@@ -61,10 +61,6 @@ std::vector<std::string> scalarFieldNames() {
     return names;
 }
 
-bool isLabelCharacter(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
-
 // A scalar field name: a canonical one ("n"), or one with a label after a dot ("n.crown"), which
 // keeps several fields of one kind apart (three glasses, each with its own index and colour).
 std::string readScalarFieldName(const Value& value) {
@@ -84,7 +80,7 @@ std::string readScalarFieldName(const Value& value) {
         if (!suggestion.empty()) reason += "; did you mean \"" + suggestion + "\"?";
         value.fail(reason);
     }
-    if (label.empty() || !std::all_of(label.begin(), label.end(), isLabelCharacter)) {
+    if (label.empty() || !std::all_of(label.begin(), label.end(), scene_detail::isLabelCharacter)) {
         value.fail("expected a label of letters, digits and '_' after \"" + kind + ".\", got \"" +
                    text + "\"");
     }
@@ -167,8 +163,18 @@ VolumeSettings readVolume(const Value& value) {
 std::map<std::string, std::vector<std::string>> readAliases(const Value& value) {
     Object object(value, "the alias table");
     std::map<std::string, std::vector<std::string>> aliases;
+    // A labelled scalar name ("density.left") is a key too: a grid loaded under it keeps two
+    // files' fields of one kind apart (the caches of two smoke domains, both naming theirs
+    // "density").
+    std::vector<std::string> keys = canonicalFieldNames();
+    for (const auto& item : value.json().items()) {
+        if (item.key().find('.') == std::string::npos) continue;
+        const json::Json key = item.key();  // checked as a field name, at the key's pointer
+        keys.push_back(
+            readScalarFieldName(Value(key, value.file(), value.child(item.key()).pointer())));
+    }
     // Asking for every canonical name makes any other key an "unknown key" with a hint.
-    for (const std::string& canonical : canonicalFieldNames()) {
+    for (const std::string& canonical : keys) {
         auto names = object.optional(canonical);
         if (!names) continue;
         std::vector<std::string>& gridNames = aliases[canonical];
@@ -603,7 +609,8 @@ void checkLabelledFields(const Value& materials, const Scene& scene) {
     for (const SourceSpec& source : scene.sources) {
         if (source.type == SourceType::Vdb || source.type == SourceType::VdbSequence) return;
         if (source.type == SourceType::Simulation) {
-            written.insert(written.end(), {"density", "temperature", "velocity"});
+            for (const std::string& name : simulationFieldNames(scene.simulations))
+                written.push_back(name);
             continue;
         }
         written.push_back(source.field);
@@ -650,6 +657,9 @@ Scene readScene(const Value& root, const std::string& file) {
     ParsedMeshes parsedMeshes;
     if (meshes) parsedMeshes = readMeshes(*meshes, sceneDirectory);
     const bool hasMeshes = !parsedMeshes.meshes.empty();
+    // Before the materials: the fields its domains publish are fields materials may read.
+    if (auto simulation = object.optional("simulation"))
+        scene.simulations = readSimulations(*simulation, sceneDirectory, parsedMeshes.meshes);
     if (auto sources = object.optional("sources"); sources || !hasMeshes)
         scene.sources = readSources(
             sources ? *sources : object.required("sources", "a non-empty array of sources"),
@@ -670,18 +680,15 @@ Scene readScene(const Value& root, const std::string& file) {
     if (auto render = object.optional("render")) scene.render = readRender(*render);
     if (auto output = object.optional("output")) scene.output = readOutput(*output);
     if (auto time = object.optional("time")) scene.time = readTime(*time);
-    if (auto simulation = object.optional("simulation")) {
-        scene.simulation = readSimulation(*simulation, sceneDirectory, scene.meshes);
-        // The cache takes the scene's output name when it has one, so that a scene's images and
-        // its simulation share a prefix.
-        if (scene.output.nameSet) scene.simulation->cacheName = scene.output.name;
-    }
+    // The cache takes the scene's output name when it has one, so that a scene's images and
+    // its simulation share a prefix.
+    setSimulationCacheNames(scene.simulations, scene.output.nameSet ? scene.output.name : "smoke");
     // Last: tracks point into everything above.
     if (auto animation = object.optional("animation"))
         scene.animation = readAnimation(*animation, scene);
     checkObstaclesStandStill(scene);
     for (const SourceSpec& source : scene.sources)
-        if (source.type == SourceType::Simulation && !scene.simulation)
+        if (source.type == SourceType::Simulation && scene.simulations.empty())
             throw Error(file + ":" + source.jsonPath + "/type",
                         "a \"simulation\" source shows the scene's smoke simulation, and the scene "
                         "has no \"simulation\" section");

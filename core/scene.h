@@ -325,8 +325,10 @@ struct Scene {
     RenderSettings render;
     OutputSettings output;
     TimeSettings time;
-    std::optional<SmokeSimulationSpec> simulation;  // `eikon simulate` steps it
-    std::vector<AnimationTrack> animation;          // sim/animation.h evaluates them
+    // The smoke domains `eikon simulate` steps (and sources of type Simulation show live): none,
+    // one ("simulation": {...}) or several ("simulation": [{...}, ...], each labelled).
+    std::vector<SmokeSimulationSpec> simulations;
+    std::vector<AnimationTrack> animation;  // sim/animation.h evaluates them
 };
 
 // The two fields a mesh writes: its coverage (absorption, scattering, emission read it) and its

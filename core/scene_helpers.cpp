@@ -16,4 +16,8 @@ std::string resolveAgainst(const std::filesystem::path& sceneDirectory, const st
     return (sceneDirectory / path).lexically_normal().string();
 }
 
+bool isLabelCharacter(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
 }  // namespace eikon::scene_detail

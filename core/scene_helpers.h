@@ -14,4 +14,7 @@ std::string formatVec3(const glm::vec3& v);
 // move together.
 std::string resolveAgainst(const std::filesystem::path& sceneDirectory, const std::string& file);
 
+// The characters of a field label ("n.crown") or a simulation domain's label: letters, digits, _.
+bool isLabelCharacter(char c);
+
 }  // namespace eikon::scene_detail

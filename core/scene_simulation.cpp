@@ -206,12 +206,28 @@ void readForces(Object& object, SmokeSimulationSpec& sim) {
     if (auto wind = object.optional("wind")) sim.wind = wind->vec3();
 }
 
-}  // namespace
+// A domain's label: it becomes part of field names ("density.<label>") and of file names.
+std::string readLabel(const Value& value) {
+    const std::string label = value.nonEmptyString();
+    for (const char c : label)
+        if (!scene_detail::isLabelCharacter(c))
+            value.fail(
+                "expected a label of letters, digits and '_' (it names the domain's "
+                "fields, density.<label>), got \"" +
+                label + "\"");
+    return label;
+}
 
 SmokeSimulationSpec readSimulation(const Value& value, const std::filesystem::path& sceneDirectory,
-                                   const std::vector<MeshObjectSpec>& meshes) {
+                                   const std::vector<MeshObjectSpec>& meshes, bool labelRequired) {
     Object object(value, "the simulation");
     SmokeSimulationSpec sim;
+    sim.jsonPath = value.pointer();
+    if (labelRequired)
+        sim.label = readLabel(object.required(
+            "label", "a name of letters, digits and '_'; each domain of several needs one"));
+    else if (auto label = object.optional("label"))
+        sim.label = readLabel(*label);
     sim.domain = readDomain(object.required("domain",
                                             "an object {\"min\": [x, y, z], \"max\": "
                                             "[x, y, z]}"));
@@ -243,20 +259,59 @@ SmokeSimulationSpec readSimulation(const Value& value, const std::filesystem::pa
     return sim;
 }
 
-void checkObstaclesStandStill(const Scene& scene) {
-    if (!scene.simulation) return;
-    for (const SimShapeSpec& obstacle : scene.simulation->obstacles) {
-        if (obstacle.kind != SimShapeSpec::Kind::Mesh) continue;
-        const std::string prefix = "/meshes/" + std::to_string(obstacle.mesh) + "/";
-        for (const AnimationTrack& track : scene.animation)
-            for (const char* key : {"translate", "rotation", "scale"})
-                if (track.target == prefix + key)
-                    throw Error(scene.path + ":" + obstacle.jsonPath + "/mesh",
-                                "mesh '" + scene.meshes[std::size_t(obstacle.mesh)].name +
-                                    "' is moved by " + track.jsonPath + " (" + track.target +
-                                    "); a smoke obstacle must stand still (moving solids are "
-                                    "not simulated)");
+}  // namespace
+
+std::vector<SmokeSimulationSpec> readSimulations(const Value& value,
+                                                 const std::filesystem::path& sceneDirectory,
+                                                 const std::vector<MeshObjectSpec>& meshes) {
+    std::vector<SmokeSimulationSpec> simulations;
+    if (!value.isArray()) {
+        if (!value.isObject()) value.failExpected("an object, or an array of labelled objects");
+        simulations.push_back(readSimulation(value, sceneDirectory, meshes, false));
+        return simulations;
     }
+    const std::vector<Value> domains =
+        value.elements("an array of simulation domains", kMaxSimulationDomains);
+    if (domains.empty()) value.fail("expected at least one simulation domain, got an empty array");
+    for (const Value& domain : domains) {
+        simulations.push_back(readSimulation(domain, sceneDirectory, meshes, true));
+        for (std::size_t d = 0; d + 1 < simulations.size(); ++d)
+            if (simulations[d].label == simulations.back().label)
+                domain.child("label").fail("label \"" + simulations.back().label +
+                                           "\" is taken by " + simulations[d].jsonPath +
+                                           "; the domains' fields would overwrite each other");
+    }
+    return simulations;
+}
+
+void setSimulationCacheNames(std::vector<SmokeSimulationSpec>& simulations,
+                             const std::string& base) {
+    for (SmokeSimulationSpec& sim : simulations)
+        sim.cacheName = sim.label.empty() ? base : base + "_" + sim.label;
+}
+
+std::vector<std::string> simulationFieldNames(const std::vector<SmokeSimulationSpec>& simulations) {
+    std::vector<std::string> names;
+    for (const SmokeSimulationSpec& sim : simulations)
+        for (const char* kind : {"density", "temperature", "velocity"})
+            names.push_back(simulationFieldName(sim, kind));
+    return names;
+}
+
+void checkObstaclesStandStill(const Scene& scene) {
+    for (const SmokeSimulationSpec& simulation : scene.simulations)
+        for (const SimShapeSpec& obstacle : simulation.obstacles) {
+            if (obstacle.kind != SimShapeSpec::Kind::Mesh) continue;
+            const std::string prefix = "/meshes/" + std::to_string(obstacle.mesh) + "/";
+            for (const AnimationTrack& track : scene.animation)
+                for (const char* key : {"translate", "rotation", "scale"})
+                    if (track.target == prefix + key)
+                        throw Error(scene.path + ":" + obstacle.jsonPath + "/mesh",
+                                    "mesh '" + scene.meshes[std::size_t(obstacle.mesh)].name +
+                                        "' is moved by " + track.jsonPath + " (" + track.target +
+                                        "); a smoke obstacle must stand still (moving solids are "
+                                        "not simulated)");
+        }
 }
 
 }  // namespace eikon

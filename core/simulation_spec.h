@@ -40,6 +40,13 @@ struct SmokeSourceSpec {
 };
 
 struct SmokeSimulationSpec {
+    // Tells the domains of a scene with several apart (letters, digits, '_'; empty for a lone
+    // unlabelled one): its fields are published as "density.<label>", "temperature.<label>" and
+    // "velocity.<label>" (labelled fields, docs/scene-format.md), so each can have a material.
+    std::string label;
+    // Where it is in the scene file: "/simulation" for a lone object, "/simulation/<d>" in an
+    // array; its tracks are "<jsonPath>/sources/<i>/<key>".
+    std::string jsonPath = "/simulation";
     // The box simulated. Cells are cubes of `voxelSize`; the box spans min + resolution·voxelSize
     // (the parser snaps "max" to whole cells when the resolution is one integer).
     Bounds3 domain{glm::vec3(-1.0f), glm::vec3(1.0f)};
@@ -69,5 +76,11 @@ struct SmokeSimulationSpec {
     std::string cacheDirectory = "cache";
     std::string cacheName = "smoke";
 };
+
+// The name domain `spec` publishes field `kind` ("density", "temperature", "velocity") under:
+// the kind itself for an unlabelled domain, "<kind>.<label>" otherwise.
+inline std::string simulationFieldName(const SmokeSimulationSpec& spec, const std::string& kind) {
+    return spec.label.empty() ? kind : kind + "." + spec.label;
+}
 
 }  // namespace eikon

@@ -127,9 +127,12 @@ SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps) {
     return solver;
 }
 
-SmokeSolver smokeSolverFrom(const Scene& scene) {
-    if (!scene.simulation) throw Error(scene.path, "no \"simulation\" section");
-    const SmokeSimulationSpec& spec = *scene.simulation;
+SmokeSolver smokeSolverFrom(const Scene& scene, std::size_t domain) {
+    if (domain >= scene.simulations.size())
+        throw Error(scene.path, scene.simulations.empty()
+                                    ? "no \"simulation\" section"
+                                    : "no simulation domain " + std::to_string(domain));
+    const SmokeSimulationSpec& spec = scene.simulations[domain];
     SmokeSettings settings = smokeSettingsFrom(spec, scene.time.fps);
     settings.firstFrame = scene.time.frameStart;
     SmokeSolver solver(settings);
@@ -142,12 +145,12 @@ SmokeSolver smokeSolverFrom(const Scene& scene) {
     Scene keyed = scene;
     keyed.animation.clear();
     for (const AnimationTrack& track : scene.animation)
-        if (track.target.rfind("/simulation/", 0) == 0) keyed.animation.push_back(track);
+        if (track.target.rfind(spec.jsonPath + "/", 0) == 0) keyed.animation.push_back(track);
     if (keyed.animation.empty()) return solver;
     auto state = std::make_shared<std::pair<Scene, SceneAnimation>>(keyed, SceneAnimation(keyed));
-    solver.setSourceUpdate([state](double seconds, std::vector<SmokeSource>& sources) {
+    solver.setSourceUpdate([state, domain](double seconds, std::vector<SmokeSource>& sources) {
         state->second.apply(seconds, state->first);
-        sources = smokeSourcesFrom(*state->first.simulation);
+        sources = smokeSourcesFrom(state->first.simulations[domain]);
     });
     return solver;
 }

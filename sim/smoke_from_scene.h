@@ -14,11 +14,12 @@ SmokeSettings smokeSettingsFrom(const SmokeSimulationSpec& spec, double fps);
 // the overload below).
 SmokeSolver smokeSolverFrom(const SmokeSimulationSpec& spec, double fps);
 
-// The solver of a whole scene's simulation (which must have one), starting at the scene's
-// frame_start: the same as above, and the scene's tracks on /simulation/sources/... applied to the
-// sources at every substep's time (SourceUpdate), so a moving source leaves a smooth trail; mesh
-// obstacles read (files), placed and voxelized at the cell centres (core/mesh_voxelize.h).
-SmokeSolver smokeSolverFrom(const Scene& scene);
+// The solver of smoke domain `domain` of a scene (Scene::simulations; throws when there is no
+// such domain), starting at the scene's frame_start: the same as above, and the scene's tracks on
+// the domain's sources (/simulation/sources/... or /simulation/<domain>/sources/...) applied at
+// every substep's time (SourceUpdate), so a moving source leaves a smooth trail; mesh obstacles
+// read (files), placed and voxelized at the cell centres (core/mesh_voxelize.h).
+SmokeSolver smokeSolverFrom(const Scene& scene, std::size_t domain = 0);
 
 // The solver's form of the spec's sources.
 std::vector<SmokeSource> smokeSourcesFrom(const SmokeSimulationSpec& spec);

@@ -16,7 +16,7 @@ openvdb::math::Transform::Ptr domainTransform(const Domain& d) {
     return xform;
 }
 
-openvdb::FloatGrid::Ptr scalarGrid(const Array3& a, const Domain& d, const char* name) {
+openvdb::FloatGrid::Ptr scalarGrid(const Array3& a, const Domain& d, const std::string& name) {
     auto grid = openvdb::FloatGrid::create(0.0f);
     grid->setName(name);
     grid->setTransform(domainTransform(d));
@@ -31,9 +31,9 @@ openvdb::FloatGrid::Ptr scalarGrid(const Array3& a, const Domain& d, const char*
     return grid;
 }
 
-openvdb::Vec3SGrid::Ptr staggeredGrid(const MacGrid& g) {
+openvdb::Vec3SGrid::Ptr staggeredGrid(const MacGrid& g, const std::string& name) {
     auto grid = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.0f));
-    grid->setName(field::kVelocity);
+    grid->setName(name);
     grid->setTransform(domainTransform(g.domain));
     grid->setGridClass(openvdb::GRID_STAGGERED);
     grid->setVectorType(openvdb::VEC_CONTRAVARIANT_RELATIVE);
@@ -56,14 +56,19 @@ openvdb::Vec3SGrid::Ptr staggeredGrid(const MacGrid& g) {
 
 }  // namespace
 
-void publishSmoke(const MacGrid& grid, FieldRegistry& registry, const std::string& origin) {
+void publishSmoke(const MacGrid& grid, FieldRegistry& registry, const std::string& origin,
+                  const std::string& label) {
     ensureOpenVdbInitialized();
-    registry.set(field::kDensity, scalarGrid(grid.density, grid.domain, field::kDensity),
-                 origin + ":density");
-    registry.set(field::kTemperature,
-                 scalarGrid(grid.temperature, grid.domain, field::kTemperature),
+    const auto name = [&](const char* kind) {
+        return label.empty() ? std::string(kind) : std::string(kind) + "." + label;
+    };
+    registry.set(name(field::kDensity),
+                 scalarGrid(grid.density, grid.domain, name(field::kDensity)), origin + ":density");
+    registry.set(name(field::kTemperature),
+                 scalarGrid(grid.temperature, grid.domain, name(field::kTemperature)),
                  origin + ":temperature");
-    registry.set(field::kVelocity, staggeredGrid(grid), origin + ":velocity");
+    registry.set(name(field::kVelocity), staggeredGrid(grid, name(field::kVelocity)),
+                 origin + ":velocity");
 }
 
 }  // namespace eikon::sim

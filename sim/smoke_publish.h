@@ -18,7 +18,11 @@ class FieldRegistry;
 namespace eikon::sim {
 
 // Stores the three fields in `registry` (replacing earlier versions). Cells whose value equals
-// the grid's background (0) stay inactive; `origin` says where they came from in messages.
-void publishSmoke(const MacGrid& grid, FieldRegistry& registry, const std::string& origin);
+// the grid's background (0) stay inactive; `origin` says where they came from in messages. With
+// a `label` (a smoke domain's, core/simulation_spec.h) the fields and their grids are named
+// "density.<label>" and so on, so that several domains' fields stand side by side; a cache file
+// is written unlabelled, with the names other tools read.
+void publishSmoke(const MacGrid& grid, FieldRegistry& registry, const std::string& origin,
+                  const std::string& label = "");
 
 }  // namespace eikon::sim

@@ -78,8 +78,9 @@ TEST_CASE("every scene in data/scenes parses", "[scene]") {
         // VDB paths are resolved against the scene's folder, so they name real files; a scene
         // with a simulation renders the cache `eikon simulate` writes, which is not shipped.
         for (const eikon::SourceSpec& source : scene.sources) {
-            const bool simulated = scene.simulation && fs::path(source.file).parent_path() ==
-                                                           scene.simulation->cacheDirectory;
+            const bool simulated =
+                !scene.simulations.empty() &&
+                fs::path(source.file).parent_path() == scene.simulations.at(0).cacheDirectory;
             if (!simulated && (source.type == eikon::SourceType::Vdb ||
                                source.type == eikon::SourceType::VdbSequence)) {
                 CHECK(fs::exists(source.file));
@@ -145,17 +146,18 @@ TEST_CASE("the shipped scenes hold what they say", "[scene]") {
     }
     SECTION("smoke around a glass mesh: the rendered glass is the obstacle, the source moves") {
         const eikon::Scene scene = eikon::loadScene((folder / "smoke_glass_mesh.json").string());
-        REQUIRE(scene.simulation);
+        REQUIRE(scene.simulations.size() == 1);
         REQUIRE(scene.sources.size() == 1);
         CHECK(scene.sources[0].type == eikon::SourceType::Simulation);  // stepped live
-        REQUIRE(scene.simulation->obstacles.size() == 1);
-        CHECK(scene.simulation->obstacles[0].kind == eikon::SimShapeSpec::Kind::Mesh);
-        CHECK(scene.meshes[std::size_t(scene.simulation->obstacles[0].mesh)].name == "glass");
+        REQUIRE(scene.simulations.at(0).obstacles.size() == 1);
+        CHECK(scene.simulations.at(0).obstacles[0].kind == eikon::SimShapeSpec::Kind::Mesh);
+        CHECK(scene.meshes[std::size_t(scene.simulations.at(0).obstacles[0].mesh)].name == "glass");
         REQUIRE(scene.animation.size() == 1);
         CHECK(scene.animation[0].target == "/simulation/sources/0/center");
         // The source's path stays below the glass (centre y 0.75, radius 0.25).
         for (std::size_t v = 1; v < scene.animation[0].values.size(); v += 3)
-            CHECK(scene.animation[0].values[v] + scene.simulation->sources[0].shape.radius < 0.5f);
+            CHECK(scene.animation[0].values[v] + scene.simulations.at(0).sources[0].shape.radius <
+                  0.5f);
     }
 }
 
@@ -774,13 +776,13 @@ std::string simulationWith(const std::string& body) {
 
 TEST_CASE("a simulation section parses into the smoke settings", "[scene][simulation]") {
     SECTION("absent: no simulation") {
-        CHECK_FALSE(eikon::parseScene(sceneWith(""), "smoke.json").simulation);
+        CHECK(eikon::parseScene(sceneWith(""), "smoke.json").simulations.empty());
     }
     SECTION("every key") {
         const eikon::Scene scene = eikon::parseScene(
             sceneWith(kSimulation + R"(, "output": {"name": "plume"})"), "scenes/smoke.json");
-        REQUIRE(scene.simulation);
-        const eikon::SmokeSimulationSpec& sim = *scene.simulation;
+        REQUIRE(scene.simulations.size() == 1);
+        const eikon::SmokeSimulationSpec& sim = scene.simulations.at(0);
         // One integer: cells along the longest axis (y, 3 units), cubic cells elsewhere.
         CHECK(sim.voxelSize == Approx(0.125f));
         CHECK(sim.resolution == glm::ivec3(16, 24, 16));
@@ -817,8 +819,8 @@ TEST_CASE("a simulation section parses into the smoke settings", "[scene][simula
     }
     SECTION("defaults") {
         const eikon::Scene scene = eikon::parseScene(simulationWith(""), "smoke.json");
-        REQUIRE(scene.simulation);
-        const eikon::SmokeSimulationSpec& sim = *scene.simulation;
+        REQUIRE(scene.simulations.size() == 1);
+        const eikon::SmokeSimulationSpec& sim = scene.simulations.at(0);
         const eikon::SmokeSimulationSpec model;
         CHECK(sim.resolution == glm::ivec3(16));
         CHECK(sim.voxelSize == Approx(1.0f / 16));
@@ -837,8 +839,8 @@ TEST_CASE("a simulation section parses into the smoke settings", "[scene][simula
             sceneWith(R"("simulation": {"domain": {"min": [0, 0, 0], "max": [1, 2, 1]},
                          "resolution": [8, 16, 8]})"),
             "smoke.json");
-        CHECK(scene.simulation->resolution == glm::ivec3(8, 16, 8));
-        CHECK(scene.simulation->voxelSize == 0.125f);
+        CHECK(scene.simulations.at(0).resolution == glm::ivec3(8, 16, 8));
+        CHECK(scene.simulations.at(0).voxelSize == 0.125f);
     }
 }
 

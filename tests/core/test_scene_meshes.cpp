@@ -259,10 +259,10 @@ TEST_CASE("a smoke obstacle names a mesh that stands still, or the error says wh
                obstacle + "]}" + animation;
     };
     const Scene ok = parseMeshes(meshes, scene(R"({"mesh": "glass"})"));
-    REQUIRE(ok.simulation->obstacles.size() == 2);
-    CHECK(ok.simulation->obstacles[1].kind == SimShapeSpec::Kind::Mesh);
-    CHECK(ok.simulation->obstacles[1].mesh == 0);
-    CHECK(ok.simulation->obstacles[1].jsonPath == "/simulation/obstacles/1");
+    REQUIRE(ok.simulations.at(0).obstacles.size() == 2);
+    CHECK(ok.simulations.at(0).obstacles[1].kind == SimShapeSpec::Kind::Mesh);
+    CHECK(ok.simulations.at(0).obstacles[1].mesh == 0);
+    CHECK(ok.simulations.at(0).obstacles[1].jsonPath == "/simulation/obstacles/1");
     // Animating the glass's optics moves nothing: still an obstacle.
     CHECK_NOTHROW(parseMeshes(meshes, scene(R"({"mesh": "glass"})",
                                             R"(, "animation": [{"target": "/meshes/0/ior",

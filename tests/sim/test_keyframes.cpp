@@ -199,13 +199,13 @@ TEST_CASE("smoke source tracks move and change the simulation's sources", "[anim
                                       "s.json");
         Scene a = base;
         sim::SceneAnimation(base).apply(1.0, a);
-        const SmokeSourceSpec& s0 = a.simulation->sources[0];
+        const SmokeSourceSpec& s0 = a.simulations.at(0).sources[0];
         CHECK(s0.shape.center.x == Approx(0.6f));
         CHECK(s0.velocity == glm::vec3(0, 1, 0));
         CHECK(s0.densityRate == Approx(1.0f));
         CHECK(s0.temperatureRate == -3.0f);  // a cold source, as the parser allows
         CHECK(s0.velocityRate == 5.0f);
-        const SimShapeSpec& box = a.simulation->sources[1].shape;
+        const SimShapeSpec& box = a.simulations.at(0).sources[1].shape;
         const glm::vec3 lo(0.9f, 0.95f, 0.8f), hi(1.1f, 1.05f, 1.2f);
         for (int a = 0; a < 3; ++a) {
             CHECK(box.boxMin[a] == Approx(lo[a]));
@@ -219,7 +219,7 @@ TEST_CASE("smoke source tracks move and change the simulation's sources", "[anim
                                       "s.json");
         Scene a = base;
         sim::SceneAnimation(base).apply(0.5, a);
-        CHECK(a.simulation->sources[0].densityRate == 0.0f);
+        CHECK(a.simulations.at(0).sources[0].densityRate == 0.0f);
     }
     auto fails = [&](const std::string& track, const std::string& where, const std::string& what) {
         INFO(track);
@@ -227,7 +227,7 @@ TEST_CASE("smoke source tracks move and change the simulation's sources", "[anim
                           Catch::Contains("s.json:" + where) && Catch::Contains(what));
     };
     fails(R"({"target": "/simulation/sources/2/center", "times": [0], "values": [[0, 0, 0]]})",
-          "/animation/0/target", "no simulation source 2 (the simulation has 2)");
+          "/animation/0/target", "no simulation source 2 (/simulation has 2)");
     fails(R"({"target": "/simulation/sources/0/radius", "times": [0], "values": [1]})",
           "/animation/0/target", "a smoke source animates center, velocity, density_rate");
     fails(R"({"target": "/simulation/obstacles/0/center", "times": [0], "values": [[0, 0, 0]]})",

@@ -30,8 +30,8 @@ const char* const kScene = R"({
 TEST_CASE("a solver built from a parsed scene has its settings and steps a frame",
           "[smoke][scene]") {
     const Scene scene = parseScene(kScene, "plume.json");
-    REQUIRE(scene.simulation);
-    sim::SmokeSolver solver = sim::smokeSolverFrom(*scene.simulation, scene.time.fps);
+    REQUIRE(scene.simulations.size() == 1);
+    sim::SmokeSolver solver = sim::smokeSolverFrom(scene.simulations.at(0), scene.time.fps);
 
     const sim::SmokeSettings& s = solver.settings();
     CHECK(s.fps == 12.0);
