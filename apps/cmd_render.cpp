@@ -108,8 +108,7 @@ int runRender(const RenderOptions& o) {
         renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());
     int64_t transportSteps = 0;  // before this frame
     for (int frame = scene.time.frameStart; frame <= scene.time.frameEnd; ++frame) {
-        driver.prepareFrame(renderer, frame);
-        const Image image = renderer.render(frame);
+        const Image image = renderer.render(driver.frameInputs(frame, scene));
         const auto t0 = std::chrono::steady_clock::now();
         if (scene.output.png) {
             const std::string path =

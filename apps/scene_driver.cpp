@@ -33,33 +33,42 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
     fieldSimulations_ = sim::makeFieldSimulations(scene);
 }
 
-void SceneDriver::prepareFrame(FrameRenderer& renderer, int frame) {
+FrameInputs SceneDriver::frameInputs(int frame, const Scene& base) {
+    FrameInputs inputs;
+    inputs.frame = frame;
+    inputs.scene = base;
     if (!fixedMeshesSet_) {
-        for (const auto& [m, mesh] : fixedMeshes_) renderer.setMesh(m, mesh);
+        inputs.meshes = fixedMeshes_;
         fixedMeshesSet_ = true;
     }
-    if (!animation_.empty()) animation_.apply(clock_.timeOfFrame(frame), renderer.scene());
+    if (!animation_.empty()) animation_.apply(clock_.timeOfFrame(frame), inputs.scene);
     for (const auto& simulation : fieldSimulations_)
         if (simulation->advanceToFrame(frame))
-            simulation->publish(
-                renderer.publishedFields(),
-                renderer.scene().path + ": simulation frame " + std::to_string(frame));
-    const Scene& now = renderer.scene();
+            simulation->publish(inputs.fields,
+                                base.path + ": simulation frame " + std::to_string(frame));
+    const Scene& now = inputs.scene;
     // An earlier frame's scene, for deformers solved frame by frame from their start; none is
     // needed when no track moves anything.
     sim::SceneAtFrame earlier;
     if (!animation_.empty())
         earlier = [&](int k) {
-            Scene then = now;
+            Scene then = base;
             animation_.apply(clock_.timeOfFrame(k), then);
             return then;
         };
     for (Moving& m : moving_) {
         if (m.frameSet == frame) continue;
         m.mesh->advanceToFrame(frame, now, earlier);
-        renderer.setMesh(m.mesh->meshIndex(), m.mesh->objectSpaceMesh(now));
+        inputs.meshes.emplace_back(m.mesh->meshIndex(), m.mesh->objectSpaceMesh(now));
         m.frameSet = frame;
     }
+    prepared_ = now;
+    return inputs;
+}
+
+const Scene& SceneDriver::preparedScene() const {
+    if (!prepared_) throw Error("ARAP handles", "no frame prepared yet");
+    return *prepared_;
 }
 
 sim::ArapMovingMesh& SceneDriver::arapOf(size_t mesh) {
@@ -78,23 +87,23 @@ std::vector<SceneDriver::HandleRef> SceneDriver::arapHandles() const {
     return handles;
 }
 
-glm::vec3 SceneDriver::handleCentre(const FrameRenderer& renderer, HandleRef h) const {
+glm::vec3 SceneDriver::handleCentre(HandleRef h) const {
     const sim::ArapDrag& arap = arapOf(h.mesh).deformer();
     const std::vector<std::uint32_t>& vertices = arap.handleVertices()[h.handle];
     glm::vec3 sum(0.0f);
     for (std::uint32_t v : vertices) sum += arap.positions()[v];
-    return placePoint(sum / float(vertices.size()), placementOf(renderer.scene(), h.mesh));
+    return placePoint(sum / float(vertices.size()), placementOf(preparedScene(), h.mesh));
 }
 
-void SceneDriver::dragHandle(FrameRenderer& renderer, HandleRef h, glm::vec3 worldMotion) {
+void SceneDriver::dragHandle(HandleRef h, glm::vec3 worldMotion, FrameInputs& inputs) {
+    const Scene& scene = preparedScene();
     sim::ArapMovingMesh& arap = arapOf(h.mesh);
-    arap.drag(h.handle, unplaceMotion(worldMotion, placementOf(renderer.scene(), h.mesh)),
-              renderer.scene());
-    renderer.setMesh(h.mesh, arap.objectSpaceMesh(renderer.scene()));
+    arap.drag(h.handle, unplaceMotion(worldMotion, placementOf(scene, h.mesh)), scene);
+    inputs.meshes.emplace_back(h.mesh, arap.objectSpaceMesh(scene));
 }
 
-glm::vec3 SceneDriver::handleTranslation(const FrameRenderer& renderer, HandleRef h) const {
-    return arapOf(h.mesh).withDrags(renderer.scene()).handles[h.handle].translation;
+glm::vec3 SceneDriver::handleTranslation(HandleRef h) const {
+    return arapOf(h.mesh).withDrags(preparedScene()).handles[h.handle].translation;
 }
 
 }  // namespace eikon::app

@@ -1,15 +1,16 @@
 #pragma once
-// What the commands that render a scene do to the renderer before each frame, so that `eikon
-// render` and `eikon view` show the same state at the same frame: the scene's keyframe tracks
-// evaluated at the frame's time on the one clock (sim/clock.h, the scene's fps), and every
+// What the commands that render a scene hand the renderer for each frame (FrameInputs), so that
+// `eikon render` and `eikon view` show the same state at the same frame: the scene's keyframe
+// tracks evaluated at the frame's time on the one clock (sim/clock.h, the scene's fps), and every
 // simulated or dragged mesh (water surfaces, jellies, ARAP handles) stepped to that frame from its
 // start at frame 0, so a
 // frame is the same however it is reached. Mesh files are read once, here (sim/refractive_mesh.h:
 // holes closed as the scene asks, then checked closed), since the renderer cannot read them, and
 // liquids are made once from their containers (sim/container_fill.h). A scene whose source is its
-// own smoke simulation has it stepped here and published to the renderer every new frame
+// own smoke simulation has it stepped here and its fields handed over every new frame
 // (sim/field_simulation.h); moving meshes are sim/moving_mesh.h's.
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -25,27 +26,31 @@ class SceneDriver {
 public:
     explicit SceneDriver(const Scene& scene);
 
-    // Sets the renderer's scene to frame `frame`'s state.
-    void prepareFrame(FrameRenderer& renderer, int frame);
+    // What the renderer takes for frame `frame` (render/frame_renderer.h FrameInputs): `base`,
+    // the scene as the command set it up, with its tracks evaluated at the frame's time; the
+    // meshes read once (on the first call) or moved to this frame; and the fields of the live
+    // simulations when they moved on. Nothing is written into the renderer: it gets this.
+    FrameInputs frameInputs(int frame, const Scene& base);
     double timeOfFrame(int frame) const { return clock_.timeOfFrame(frame); }
 
     // The user's drags of ARAP handles (eikon view). A drag moves a handle at every frame, on
     // top of what its tracks do, so playing or stepping frames keeps it; the frame on screen
     // follows at once, by more iterations from its current shape (sim/arap_drag.h
     // dragCurrentFrame), and a frame reached later is solved from rest with the drags in.
+    // All of them work on the last frame frameInputs prepared, and throw before the first.
     struct HandleRef {
         size_t mesh = 0;    // index into scene.meshes
         size_t handle = 0;  // index into that mesh's deformer handles
     };
     std::vector<HandleRef> arapHandles() const;
     // The world position of the centre of the handle's vertices in the prepared frame's shape.
-    glm::vec3 handleCentre(const FrameRenderer& renderer, HandleRef h) const;
-    // Moves the handle by `worldMotion` (in the prepared frame's placement) and re-solves the
-    // prepared frame's shape (sim/arap_drag.h throws before any frame was prepared).
-    void dragHandle(FrameRenderer& renderer, HandleRef h, glm::vec3 worldMotion);
+    glm::vec3 handleCentre(HandleRef h) const;
+    // Moves the handle by `worldMotion` (in the prepared frame's placement), re-solves the
+    // prepared frame's shape and adds it to `inputs`, that frame's.
+    void dragHandle(HandleRef h, glm::vec3 worldMotion, FrameInputs& inputs);
     // The handle's translation at the prepared frame with the drags in: the value a key of its
     // /meshes/i/deformer/handles/j/translate track needs to keep the dragged pose.
-    glm::vec3 handleTranslation(const FrameRenderer& renderer, HandleRef h) const;
+    glm::vec3 handleTranslation(HandleRef h) const;
 
 private:
     sim::SceneAnimation animation_;
@@ -68,6 +73,10 @@ private:
     // containers): handed to the renderer once.
     std::vector<std::pair<size_t, TriangleMesh>> fixedMeshes_;
     bool fixedMeshesSet_ = false;
+    // The scene of the frame frameInputs prepared last (tracks evaluated), which the handles'
+    // placements are read from; empty before.
+    std::optional<Scene> prepared_;
+    const Scene& preparedScene() const;
 };
 
 }  // namespace eikon::app

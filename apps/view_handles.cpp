@@ -26,9 +26,9 @@ ViewHandles::ViewHandles(SceneDriver& driver, const Scene& scene)
     onImage_.assign(handles_.size(), std::nullopt);
 }
 
-void ViewHandles::locate(const FrameRenderer& renderer, const CameraFrame& camera, int width) {
+void ViewHandles::locate(const CameraFrame& camera, int width) {
     for (size_t i = 0; i < handles_.size(); ++i)
-        onImage_[i] = projectToImage(camera, driver_.handleCentre(renderer, handles_[i]), width);
+        onImage_[i] = projectToImage(camera, driver_.handleCentre(handles_[i]), width);
 }
 
 bool ViewHandles::pick(glm::vec2 cursor) {
@@ -61,19 +61,19 @@ void ViewHandles::select(const std::string& meshSlashHandle) {
                     " (its handles: " + (choices.empty() ? std::string("none") : choices) + ")");
 }
 
-void ViewHandles::drag(FrameRenderer& renderer, const CameraFrame& camera, int width,
+void ViewHandles::drag(FrameInputs& inputs, const CameraFrame& camera, int width,
                        glm::vec2 pixels) {
     if (selected_ < 0) return;
     const SceneDriver::HandleRef h = handles_[size_t(selected_)];
-    const glm::vec3 centre = driver_.handleCentre(renderer, h);
-    driver_.dragHandle(renderer, h, cameraPlaneMotion(camera, centre, pixels, width));
+    const glm::vec3 centre = driver_.handleCentre(h);
+    driver_.dragHandle(h, cameraPlaneMotion(camera, centre, pixels, width), inputs);
 }
 
-std::string ViewHandles::describeSelected(const FrameRenderer& renderer, double timeSeconds) const {
+std::string ViewHandles::describeSelected(double timeSeconds) const {
     if (selected_ < 0) return "no handle selected";
     const SceneDriver::HandleRef h = handles_[size_t(selected_)];
     const std::optional<glm::vec2>& at = onImage_[size_t(selected_)];
-    const glm::vec3 t = driver_.handleTranslation(renderer, h);
+    const glm::vec3 t = driver_.handleTranslation(h);
     char text[512];
     std::snprintf(text, sizeof(text),
                   "handle %s at pixel (%.3f, %.3f); to keep this pose: {\"target\": "

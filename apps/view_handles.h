@@ -23,7 +23,7 @@ public:
 
     // Where the handles show on a `width`-wide image under `camera`, for the prepared frame:
     // after every prepared frame, before picking, dragging or drawing.
-    void locate(const FrameRenderer& renderer, const CameraFrame& camera, int width);
+    void locate(const CameraFrame& camera, int width);
 
     // Selects the handle whose marker is nearest `cursor` (image pixels), if within four marker
     // radii of it; false (the selection kept) when none is.
@@ -34,12 +34,13 @@ public:
     bool selected() const { return selected_ >= 0; }
 
     // Moves the selected handle so that its marker moves by `pixels` (x right, y down) on the
-    // `width`-wide image under `camera`, and the prepared frame's shape after it.
-    void drag(FrameRenderer& renderer, const CameraFrame& camera, int width, glm::vec2 pixels);
+    // `width`-wide image under `camera`, and the prepared frame's shape after it (into `inputs`,
+    // the frame's, which the renderer then takes).
+    void drag(FrameInputs& inputs, const CameraFrame& camera, int width, glm::vec2 pixels);
 
     // The selected handle: its name, where its marker is, and the key (at `timeSeconds`) that
     // keeps its dragged pose.
-    std::string describeSelected(const FrameRenderer& renderer, double timeSeconds) const;
+    std::string describeSelected(double timeSeconds) const;
 
     void drawMarkers(Image& image) const;
 

@@ -53,8 +53,8 @@ bool Viewer::pressed(int key) {
     return edge;
 }
 
-CameraFrame Viewer::cameraNow() const {
-    return makeCameraFrame(renderer_.scene().camera, renderer_.volume().bounds, scene_.render.width,
+CameraFrame Viewer::cameraOf(const Scene& frame) const {
+    return makeCameraFrame(frame.camera, renderer_.volume().bounds, scene_.render.width,
                            scene_.render.height);
 }
 
@@ -107,8 +107,7 @@ bool Viewer::input() {
     } else if (!right && s.draggingHandle) {
         s.draggingHandle = false;
         if (handles_.selected())
-            std::printf("%s\n",
-                        handles_.describeSelected(renderer_, driver_.timeOfFrame(s.frame)).c_str());
+            std::printf("%s\n", handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
     }
     s.lastX = x, s.lastY = y;
     if (scrollAccumulated != 0.0 && s.orbit) {
@@ -132,28 +131,28 @@ void Viewer::render() {
     if (scriptedNow) s.pendingDrag += options_.drag->pixels, s.dirty = true;
     if (!s.dirty) return;
     const int width = scene_.render.width;
-    driver_.prepareFrame(renderer_, s.frame);
-    if (s.orbit) renderer_.scene().camera = s.orbit->spec();  // the user's view wins
+    FrameInputs inputs = driver_.frameInputs(s.frame, scene_);
+    if (s.orbit) inputs.scene.camera = s.orbit->spec();  // the user's view wins
     if (s.pendingDrag != glm::vec2(0.0f) && s.rendered > 0) {
-        const CameraFrame camera = cameraNow();
-        handles_.locate(renderer_, camera, width);
+        const CameraFrame camera = cameraOf(inputs.scene);
+        handles_.locate(camera, width);
         if (scriptedNow)
             std::printf("before the drag: %s\n",
-                        handles_.describeSelected(renderer_, driver_.timeOfFrame(s.frame)).c_str());
+                        handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
         const auto start = std::chrono::steady_clock::now();
-        handles_.drag(renderer_, camera, width, s.pendingDrag);
+        handles_.drag(inputs, camera, width, s.pendingDrag);
         s.dragMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
         s.pendingDrag = glm::vec2(0.0f);
     }
-    s.image = renderer_.render(s.frame);
+    s.image = renderer_.render(inputs);
     if (!s.orbit)
         s.orbit.emplace(scene_.camera, renderer_.volume().bounds, width, scene_.render.height);
-    handles_.locate(renderer_, cameraNow(), width);
+    handles_.locate(cameraOf(renderer_.scene()), width);
     if (scriptedNow)
         std::printf("after the drag: %s\n",
-                    handles_.describeSelected(renderer_, driver_.timeOfFrame(s.frame)).c_str());
+                    handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
     showMarkers();
     std::string stats = statsLine(renderer_.takeStats());
     if (s.dragMs >= 0.0) {

@@ -66,7 +66,8 @@ public:
     const ViewerState& state() const { return state_; }
 
 private:
-    CameraFrame cameraNow() const;
+    // The camera of `frame` (a frame's scene) over the renderer's volume.
+    CameraFrame cameraOf(const Scene& frame) const;
     void showMarkers();
 
     const Scene& scene_;  // as loaded: its camera is the one R resets to

@@ -128,6 +128,16 @@ std::vector<StageTime> FrameRenderer::takeStats() {
     return out;
 }
 
+Image FrameRenderer::render(const FrameInputs& inputs) {
+    scene_ = inputs.scene;
+    for (const auto& [index, mesh] : inputs.meshes) setMesh(index, mesh);
+    for (const std::string& name : inputs.fields.names()) {
+        const Field& field = inputs.fields.get(name);
+        fields_.set(name, field.grid, field.origin);
+    }
+    return render(inputs.frame);
+}
+
 Image FrameRenderer::render(int frame) {
     timer_->begin("load");
     sources_.loadFrame(frame, fields_);

@@ -9,12 +9,14 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/dense_grid.h"
 #include "core/field_registry.h"
 #include "core/scene.h"
 #include "core/scene_sources.h"
+#include "core/triangle_mesh.h"
 #include "render/gpu_timer.h"
 #include "render/image.h"
 #include "render/light_transport.h"
@@ -32,6 +34,26 @@ class ViewPassGpu;
 
 enum class Backend { Gpu, Cpu };
 
+// What the program rendering a scene hands the renderer for one frame, besides what the scene's
+// own sources load (apps/scene_driver.h makes them each frame): the scene as it stands at that
+// frame (its tracks evaluated, a viewer's camera), the object-space meshes made or moved since the
+// last frame (a file's, a deformer's output), and the fields it computed itself (a live smoke
+// simulation: sources of type Simulation). The renderer keeps what it was given: a mesh or a
+// field not given again stays as it was, and only what changed reruns.
+struct FrameInputs {
+    FrameInputs() = default;
+    FrameInputs(int frameNumber, Scene frameScene)
+        : frame(frameNumber), scene(std::move(frameScene)) {}
+
+    int frame = 0;
+    Scene scene;
+    // Scene mesh index and its triangles; core cannot read mesh files, so a file's mesh comes
+    // here (sim/mesh_io.h); meshes from shapes are generated already.
+    std::vector<std::pair<size_t, TriangleMesh>> meshes;
+    // Each field is stored as a new version: it is resampled and uploaded again.
+    FieldRegistry fields;
+};
+
 class FrameRenderer {
 public:
     // Gpu renders in `context` (a window's, kept current by the caller) or, when null, in a
@@ -39,23 +61,20 @@ public:
     FrameRenderer(const Scene& scene, Backend backend, GlContext* context = nullptr);
     ~FrameRenderer();
 
+    // Renders frame `inputs.frame` of `inputs.scene` with its meshes and fields (camera, lights
+    // and materials changes need no reload). Throws eikon::Error for a bad mesh index or an
+    // unusable mesh, naming it, and for anything the scene's sources or optics get wrong.
+    Image render(const FrameInputs& inputs);
+    // Renders frame `frame` of the scene as last given (the constructor's or the last inputs').
     Image render(int frame);
 
-    // The object-space triangles of scene mesh `index`: a file's (core cannot read meshes; the
-    // caller loads them through sim/mesh_io.h) or a deformer's output each frame. Meshes from
-    // shapes are generated already. Throws eikon::Error for a bad index or an unusable mesh.
-    void setMesh(size_t index, TriangleMesh objectSpace);
     // Meshes voxelized so far: only when a mesh, its placement or the render volume changed.
     int voxelizations() const { return meshFields_.voxelizations(); }
 
-    // The scene, for changes between frames (camera, lights, materials need no reload).
-    Scene& scene() { return scene_; }
+    // The scene of the last frame rendered (the constructor's before any).
     const Scene& scene() const { return scene_; }
     const RenderVolume& volume() const { return volume_; }
     const FieldRegistry& fields() const { return fields_; }
-    // Where the program rendering the scene publishes fields it computes itself each frame (a
-    // live smoke simulation: sources of type Simulation); a new version re-uploads the field.
-    FieldRegistry& publishedFields() { return fields_; }
     Backend backend() const { return backend_; }
     const GlContext* context() const { return gl_; }
     // Stage times summed since the last call (load, resample, upload, light, view, readback).
@@ -79,6 +98,7 @@ public:
     bool hardwareTrilinear() const { return hardwareTrilinear_; }
 
 private:
+    void setMesh(size_t index, TriangleMesh objectSpace);
     void updateTransport(const ViewSetup& base, const std::vector<const DenseGrid*>& slotGrids);
 
     Scene scene_;

@@ -105,11 +105,12 @@ TEST_CASE("n = 1 everywhere keeps rays straight and computes no gradient volume"
         FrameRenderer bent(glassy, backend);
         bent.render(0);
         CHECK(bent.gradientUpdates() == 1);
-        bent.scene().camera.position.x += 0.5f;  // a camera move reuses it
-        bent.render(0);
+        Scene next = bent.scene();       // the next frames' scene, as the test changes it
+        next.camera.position.x += 0.5f;  // a camera move reuses it
+        bent.render({0, next});
         CHECK(bent.gradientUpdates() == 1);
-        bent.scene().materials[0].ior = 1.5f;  // a new index does not
-        bent.render(0);
+        next.materials[0].ior = 1.5f;  // a new index does not
+        bent.render({0, next});
         CHECK(bent.gradientUpdates() == 2);
     }
 }

@@ -63,9 +63,11 @@ eikon::CameraSpec lookAlong(glm::vec3 dir) {
     return c;
 }
 
+// The scene the renderer last rendered, seen along `dir`.
 glm::vec3 seenAlong(FrameRenderer& renderer, glm::vec3 dir) {
-    renderer.scene().camera = lookAlong(dir);
-    const Image image = renderer.render(0);
+    eikon::FrameInputs inputs{0, renderer.scene()};
+    inputs.scene.camera = lookAlong(dir);
+    const Image image = renderer.render(inputs);
     return glm::vec3(image.at(0, 0));
 }
 
@@ -172,7 +174,9 @@ TEST_CASE("image environment: known directions see their regions; rotation turns
         checkNear(seenAlong(renderer, glm::vec3(0, 1, 0)), 2.0f * kUp, 1e-5);
         checkNear(seenAlong(renderer, glm::vec3(0, -1, 0)), 2.0f * kDown, 1e-5);
         // 90 degrees counter-clockwise seen from above: what was at −z is now at −x, −x at +z.
-        renderer.scene().environment.rotationDeg = 90.0f;
+        Scene rotated = renderer.scene();
+        rotated.environment.rotationDeg = 90.0f;
+        renderer.render({0, rotated});  // the views below start from this scene
         checkNear(seenAlong(renderer, glm::vec3(-1, 0, 0)), 2.0f * kMinusZ, 1e-5);
         checkNear(seenAlong(renderer, glm::vec3(0, 0, 1)), 2.0f * kMinusX, 1e-5);
         checkNear(seenAlong(renderer, glm::vec3(1, 0, 0)), 2.0f * kPlusZ, 1e-5);
@@ -268,18 +272,19 @@ TEST_CASE("image environment: read once per change of path", "[environment]") {
     scene.environment.file = dir + "/a.exr";
     FrameRenderer renderer(scene, Backend::Cpu);
     renderer.render(0);
-    renderer.scene().camera = lookAlong(glm::vec3(1, 0, 0));
-    renderer.render(0);
+    Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+    next.camera = lookAlong(glm::vec3(1, 0, 0));
+    renderer.render({0, next});
     CHECK(renderer.environmentLoads() == 1);
-    renderer.scene().environment.file = dir + "/b.exr";
-    checkNear(glm::vec3(renderer.render(0).at(0, 0)), glm::vec3(0.25f, 0.5f, 0.75f), 1e-6);
+    next.environment.file = dir + "/b.exr";
+    checkNear(glm::vec3(renderer.render({0, next}).at(0, 0)), glm::vec3(0.25f, 0.5f, 0.75f), 1e-6);
     CHECK(renderer.environmentLoads() == 2);
     // Another type and back: the colour needs no file; the image is read again.
-    renderer.scene().environment.type = EnvironmentType::Color;
-    renderer.scene().environment.color = glm::vec3(0.125f);
-    checkNear(glm::vec3(renderer.render(0).at(0, 0)), glm::vec3(0.125f), 0.0);
-    renderer.scene().environment.type = EnvironmentType::Image;
-    renderer.render(0);
+    next.environment.type = EnvironmentType::Color;
+    next.environment.color = glm::vec3(0.125f);
+    checkNear(glm::vec3(renderer.render({0, next}).at(0, 0)), glm::vec3(0.125f), 0.0);
+    next.environment.type = EnvironmentType::Image;
+    renderer.render({0, next});
     CHECK(renderer.environmentLoads() == 3);
 }
 

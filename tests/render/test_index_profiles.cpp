@@ -325,7 +325,8 @@ TEST_CASE("a negative field read by a refracting material stops the render, nami
                                             "cold_glass.json:/sources/0), which is -1 at (") &&
                               Catch::Contains("the materials make n = 0.5 there"));
         // Once the field is fixed, the same renderer renders.
-        renderer.scene().materials[0].ior = 1.0f;
-        CHECK_NOTHROW(renderer.render(0));
+        Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+        next.materials[0].ior = 1.0f;
+        CHECK_NOTHROW(renderer.render({0, next}));
     }
 }

@@ -172,6 +172,7 @@ TEST_CASE("a method's cache key follows its own settings", "[light_transport]") 
     renderer.render(0);
     CHECK(renderer.transportRuns("photons") == 1);  // nothing changed
     int runs = 1;
+    Scene next = renderer.scene();  // the next frames' scene, as the test changes it
     for (const auto& [key, value] :
          std::vector<std::pair<std::string, double>>{{"per_side", 20},
                                                      {"min_step_voxels", 1.5},
@@ -180,13 +181,13 @@ TEST_CASE("a method's cache key follows its own settings", "[light_transport]") 
                                                      {"steps_per_round", 5},
                                                      {"kappa_tolerance", 0.3}}) {
         INFO(key);
-        eikon::test::setPhotonSetting(renderer.scene(), key, value);
-        renderer.render(0);
+        eikon::test::setPhotonSetting(next, key, value);
+        renderer.render({0, next});
         CHECK(renderer.transportRuns("photons") == ++runs);
     }
     // Light volume settings change nothing of the photons.
-    eikon::test::setShadows(renderer.scene(), "volume");
-    renderer.render(0);
+    eikon::test::setShadows(next, "volume");
+    renderer.render({0, next});
     CHECK(renderer.transportRuns("photons") == runs);
 
     Scene straight = base;
@@ -194,15 +195,16 @@ TEST_CASE("a method's cache key follows its own settings", "[light_transport]") 
     eikon::FrameRenderer volumes(straight, eikon::Backend::Cpu);
     volumes.render(0);
     REQUIRE(volumes.transportRuns("light_volumes") == 1);
-    eikon::test::setTransportSetting(volumes.scene(), "light_volumes", "shadow_step_voxels", 2);
-    volumes.render(0);
+    Scene nextVolumes = volumes.scene();  // the next frames' scene, as the test changes it
+    eikon::test::setTransportSetting(nextVolumes, "light_volumes", "shadow_step_voxels", 2);
+    volumes.render({0, nextVolumes});
     CHECK(volumes.transportRuns("light_volumes") == 2);
-    eikon::test::setShadows(volumes.scene(), "volume");
-    volumes.render(0);
+    eikon::test::setShadows(nextVolumes, "volume");
+    volumes.render({0, nextVolumes});
     CHECK(volumes.transportRuns("light_volumes") == 3);
     // Marched at every view sample: no volume to compute.
-    eikon::test::setShadows(volumes.scene(), "marched");
-    volumes.render(0);
+    eikon::test::setShadows(nextVolumes, "marched");
+    volumes.render({0, nextVolumes});
     CHECK(volumes.transportRuns("light_volumes") == 3);
     CHECK(volumes.transportRuns("photons") == 0);
 }

@@ -202,18 +202,19 @@ TEST_CASE("light volumes rerun only when lights or extinction change", "[light]"
         FrameRenderer r(scene, backend);
         r.render(0);
         CHECK(r.transportRuns("light_volumes") == 1);
-        r.scene().camera.automatic = false;
-        r.scene().camera.position = glm::vec3(3.0f, 1.0f, 2.0f);
-        r.render(0);
+        Scene next = r.scene();  // the next frames' scene, as the test changes it
+        next.camera.automatic = false;
+        next.camera.position = glm::vec3(3.0f, 1.0f, 2.0f);
+        r.render({0, next});
         CHECK(r.transportRuns("light_volumes") == 1);  // a camera move reuses them
-        r.scene().lights[0].direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
-        r.render(0);
+        next.lights[0].direction = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
+        r.render({0, next});
         CHECK(r.transportRuns("light_volumes") == 2);
-        r.scene().materials[0].absorption = glm::vec3(0.5f);
-        r.render(0);
+        next.materials[0].absorption = glm::vec3(0.5f);
+        r.render({0, next});
         CHECK(r.transportRuns("light_volumes") == 3);
-        eikon::test::setShadows(r.scene(), "marched");  // nothing reads them now
-        r.render(0);
+        eikon::test::setShadows(next, "marched");  // nothing reads them now
+        r.render({0, next});
         CHECK(r.transportRuns("light_volumes") == 3);
     }
 }

@@ -91,19 +91,23 @@ TEST_CASE("meshes are voxelized again only when they move", "[meshes]") {
     FrameRenderer renderer(parseScene(kBallScene, "ball.json"), Backend::Cpu);
     renderer.render(0);
     CHECK(renderer.voxelizations() == 1);
-    renderer.scene().camera.automatic = false;
-    renderer.scene().camera.position = glm::vec3(1.5f, 0.5f, 2.0f);
-    renderer.render(0);
+    Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+    next.camera.automatic = false;
+    next.camera.position = glm::vec3(1.5f, 0.5f, 2.0f);
+    renderer.render({0, next});
     CHECK(renderer.voxelizations() == 1);  // a camera move
-    renderer.scene().lights[0].intensity = 3.0f;
-    renderer.render(0);
+    next.lights[0].intensity = 3.0f;
+    renderer.render({0, next});
     CHECK(renderer.voxelizations() == 1);  // a light change
-    renderer.scene().meshes[0].translation = glm::vec3(0.05f, 0.0f, 0.0f);
-    renderer.render(0);
+    next.meshes[0].translation = glm::vec3(0.05f, 0.0f, 0.0f);
+    renderer.render({0, next});
     CHECK(renderer.voxelizations() == 2);  // the mesh moved (and the volume with it)
-    renderer.setMesh(0, icosphere(glm::vec3(0.0f), 0.45f, 2));
-    renderer.render(0);
+    FrameInputs newTriangles{0, next};
+    newTriangles.meshes.emplace_back(0, icosphere(glm::vec3(0.0f), 0.45f, 2));
+    renderer.render(newTriangles);
     CHECK(renderer.voxelizations() == 3);  // new triangles
+    renderer.render({0, next});            // given no mesh: the renderer keeps the last
+    CHECK(renderer.voxelizations() == 3);
 }
 
 TEST_CASE("a mesh from a file that nobody loaded is an error naming it", "[meshes]") {
@@ -117,8 +121,13 @@ TEST_CASE("a mesh from a file that nobody loaded is an error naming it", "[meshe
                                               Catch::Contains("was not loaded"));
     TriangleMesh bad = boxMesh(glm::vec3(0.0f), glm::vec3(1.0f));
     bad.positions[2].x = INFINITY;
-    CHECK_THROWS_WITH(renderer.setMesh(0, bad),
+    FrameInputs badMesh{0, scene};
+    badMesh.meshes.emplace_back(0, bad);
+    CHECK_THROWS_WITH(renderer.render(badMesh),
                       Catch::Contains("/meshes/0") && Catch::Contains("vertex 2 is not finite"));
+    FrameInputs noSuchMesh{0, scene};
+    noSuchMesh.meshes.emplace_back(3, boxMesh(glm::vec3(0.0f), glm::vec3(1.0f)));
+    CHECK_THROWS_WITH(renderer.render(noSuchMesh), Catch::Contains("mesh 3 does not exist"));
 }
 
 TEST_CASE("a mesh scene renders the same on the GPU as on the CPU twin", "[meshes][gpu]") {

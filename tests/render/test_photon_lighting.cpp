@@ -155,33 +155,34 @@ TEST_CASE("photon lighting: a camera move traces no photons, a light change does
         CHECK(traced.rounds > 0);
         CHECK(renderer.lastTransportStats().particlesCut == traced.photonsCut);
 
-        renderer.scene().camera.position = glm::vec3(1.0f, 0.5f, 3.5f);
-        const Image moved = renderer.render(0);
+        Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+        next.camera.position = glm::vec3(1.0f, 0.5f, 3.5f);
+        const Image moved = renderer.render({0, next});
         CHECK(moved.pixels != first.pixels);
         CHECK(renderer.transportRuns("photons") == 1);
         CHECK(renderer.transportSteps() == steps);  // zero photon steps for the camera move
         CHECK(renderer.gradientUpdates() == 1);
 
-        renderer.render(1);  // a new frame of the same still scene
+        renderer.render({1, next});  // a new frame of the same still scene
         CHECK(renderer.transportSteps() == steps);
 
-        renderer.scene().lights[0].direction = glm::normalize(glm::vec3(-0.3f, -1.0f, 0.1f));
-        renderer.render(0);
+        next.lights[0].direction = glm::normalize(glm::vec3(-0.3f, -1.0f, 0.1f));
+        renderer.render({0, next});
         CHECK(renderer.transportRuns("photons") == 2);
         CHECK(renderer.transportSteps() > steps);
         CHECK(renderer.gradientUpdates() == 1);  // n did not change
 
-        renderer.scene().materials[0].scattering = glm::vec3(0.3f);  // σ: photons rerun
-        renderer.render(0);
+        next.materials[0].scattering = glm::vec3(0.3f);  // σ: photons rerun
+        renderer.render({0, next});
         CHECK(renderer.transportRuns("photons") == 3);
         CHECK(renderer.gradientUpdates() == 1);
 
         // The march's round size and stop rule decide which photons are cut: photons rerun.
-        eikon::test::setPhotonSetting(renderer.scene(), "stop_fraction", 0.01f);
-        renderer.render(0);
+        eikon::test::setPhotonSetting(next, "stop_fraction", 0.01f);
+        renderer.render({0, next});
         CHECK(renderer.transportRuns("photons") == 4);
-        eikon::test::setPhotonSetting(renderer.scene(), "steps_per_round", 5);
-        renderer.render(0);
+        eikon::test::setPhotonSetting(next, "steps_per_round", 5);
+        renderer.render({0, next});
         CHECK(renderer.transportRuns("photons") == 5);
         CHECK(renderer.gradientUpdates() == 1);
     }

@@ -234,34 +234,38 @@ TEST_CASE("only what changed is resampled and uploaded", "[view]") {
         CHECK(renderer.resamples() == resamples);
     }
     SECTION("a camera move: no resample, no upload, a different image") {
-        renderer.scene().camera.position = glm::vec3(-1.0f, 0.2f, 3.5f);
-        const Image moved = renderer.render(0);
+        Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+        next.camera.position = glm::vec3(-1.0f, 0.2f, 3.5f);
+        const Image moved = renderer.render({0, next});
         CHECK(renderer.uploads() == uploads);
         CHECK(renderer.resamples() == resamples);
         CHECK(moved.pixels != first.pixels);
     }
     SECTION("a material's absorption (a uniform): no resample, no upload") {
-        renderer.scene().materials[0].absorption = glm::vec3(3.0f);
-        const Image darker = renderer.render(0);
+        Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+        next.materials[0].absorption = glm::vec3(3.0f);
+        const Image darker = renderer.render({0, next});
         CHECK(renderer.uploads() == uploads);
         CHECK(renderer.resamples() == resamples);
         CHECK(darker.pixels != first.pixels);
     }
     SECTION("a light change: no resample, no upload") {
-        renderer.scene().lights[1].intensity = 30.0f;
-        renderer.scene().lights[2].direction = glm::normalize(glm::vec3(0.6f, -0.3f, -0.75f));
-        const Image relit = renderer.render(0);
+        Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+        next.lights[1].intensity = 30.0f;
+        next.lights[2].direction = glm::normalize(glm::vec3(0.6f, -0.3f, -0.75f));
+        const Image relit = renderer.render({0, next});
         CHECK(renderer.uploads() == uploads);
         CHECK(renderer.resamples() == resamples);
         CHECK(relit.pixels != first.pixels);
     }
     SECTION("a new render volume: one resample, one upload") {
-        Scene& s = renderer.scene();
+        Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+        Scene& s = next;
         setVolume(s, glm::vec3(-1.2f), glm::vec3(1.2f), glm::ivec3(32));
-        renderer.render(0);
+        renderer.render({0, next});
         CHECK(renderer.uploads() == uploads + 1);
         CHECK(renderer.resamples() == resamples + 1);
-        renderer.render(0);  // and then nothing again
+        renderer.render({0, next});  // and then nothing again
         CHECK(renderer.uploads() == uploads + 1);
         CHECK(renderer.resamples() == resamples + 1);
     }
@@ -276,8 +280,9 @@ TEST_CASE("only what changed is resampled and uploaded", "[view]") {
         vdb.type = SourceType::Vdb;
         vdb.file = file;
         vdb.jsonPath = "/sources/0";
-        renderer.scene().sources[0] = vdb;
-        const Image replaced = renderer.render(0);
+        Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+        next.sources[0] = vdb;
+        const Image replaced = renderer.render({0, next});
         CHECK(renderer.uploads() == uploads + 1);
         CHECK(renderer.resamples() == resamples + 1);
         CHECK(replaced.pixels != first.pixels);
@@ -289,9 +294,10 @@ TEST_CASE("a camera move on the CPU twin resamples nothing", "[view]") {
     renderer.render(0);
     CHECK(renderer.resamples() == 1);
     CHECK(renderer.uploads() == 0);  // no GPU, nothing to upload
-    renderer.scene().camera.position = glm::vec3(1.0f, 1.0f, 3.0f);
-    renderer.scene().materials[0].scattering = glm::vec3(0.5f);
-    renderer.render(0);
+    Scene next = renderer.scene();   // the next frames' scene, as the test changes it
+    next.camera.position = glm::vec3(1.0f, 1.0f, 3.0f);
+    next.materials[0].scattering = glm::vec3(0.5f);
+    renderer.render({0, next});
     CHECK(renderer.resamples() == 1);
 }
 
@@ -316,8 +322,9 @@ TEST_CASE("an opaque blocker between the light and a scattering sphere shadows i
             eikon::test::setShadows(scene, shadowName(mode));
             FrameRenderer renderer(scene, backend);
             const Image blocked = renderer.render(0);
-            renderer.scene().materials[1].absorption = glm::vec3(0.0f);
-            const Image open = renderer.render(0);
+            Scene next = renderer.scene();  // the next frames' scene, as the test changes it
+            next.materials[1].absorption = glm::vec3(0.0f);
+            const Image open = renderer.render({0, next});
             CHECK(renderer.resamples() == 2);  // two fields, once each
             // Sum a 5x5 block of pixels around the centre, all of them on the sphere.
             double litSum = 0, shadowSum = 0;
