@@ -25,17 +25,18 @@ EK_NAMESPACE_BEGIN
 #define EK_ENVIRONMENT_GRADIENT 1  // zenith, horizon and ground colours blended by elevation
 #define EK_ENVIRONMENT_IMAGE 2     // an equirectangular image (fetchEnvironment) × intensity
 
-// How a receiver (shaders/shared/receivers.h) learns the irradiance photons bring it.
-#define EK_RECEIVER_PLANE 0   // from the map of the flux of photons crossing the plane
-#define EK_RECEIVER_VOXELS 1  // from the photon volumes beside the plane (Sun et al.'s floors)
+// How a receiver (shaders/shared/receivers.h) learns the irradiance of the lights in the fluence.
+#define EK_RECEIVER_PLANE 0   // from its receiver map: the flux crossing the plane, per area
+#define EK_RECEIVER_VOXELS 1  // from the fluence volumes beside the plane (Sun et al.'s floors)
 
 // fetchVolume slots after the fields (0..) and the light volumes: the ∇n volume (xyz = ∇n, w = n).
 #define EK_GRADIENT_SLOT (EK_MAX_MATERIALS + EK_MAX_LIGHTS)
-// The smoothed photon volumes (render/transport/photons/photon_radiance.h): rgb = Σ flux·length per
-// voxel (power × scene units), and xyz = the luminance-weighted sum of the directions the light
-// travels.
-#define EK_PHOTON_RADIANCE_SLOT (EK_GRADIENT_SLOT + 1)
-#define EK_PHOTON_DIRECTION_SLOT (EK_GRADIENT_SLOT + 2)
+// The light-transport method's fluence volumes, the output contract the view reads
+// (render/light_transport.h; the photons' are their smoothed deposits,
+// render/transport/photons/photon_radiance.h): rgb = Σ flux·length per voxel (power × scene
+// units), and xyz = the luminance-weighted sum of the directions the light travels.
+#define EK_FLUENCE_SLOT (EK_GRADIENT_SLOT + 1)
+#define EK_FLUENCE_DIRECTION_SLOT (EK_GRADIENT_SLOT + 2)
 
 // One material: optics per unit of its field's value (see core/scene.h).
 struct GpuMaterial {
@@ -72,8 +73,8 @@ struct GpuViewParams {
     ivec4 image;         // x, y: pixels; z: light count (lightCount); w: EK_SHADOWS_* (shadowMode)
     vec4 background;     // rgb radiance; w: a ray stops below it (minTransmittance)
     // The packed flags, read through the accessors below. x: 1 = curved view rays through the ∇n
-    // volume, 0 = straight (curvedRays); y: 1 = in-scattering read from the photon volumes
-    // (readsFluence); z: bit l set = light l's light reaches the medium through the photon
+    // volume, 0 = straight (curvedRays); y: 1 = in-scattering read from the fluence volumes
+    // (readsFluence); z: bit l set = light l's light reaches the medium through the fluence
     // volumes, not through its light volume (lightInFluence); w: receiver count (receiverCount).
     ivec4 pipeline;
     // The environment (shaders/shared/environment.h). x: EK_ENVIRONMENT_* (environmentType); y, z:
@@ -100,7 +101,7 @@ inline bool curvedRays(const GpuViewParams& p) {
     return p.pipeline.x != 0;  // view rays bend through the ∇n volume
 }
 inline bool readsFluence(const GpuViewParams& p) {
-    return p.pipeline.y != 0;  // in-scattering read from the photon (fluence) volumes
+    return p.pipeline.y != 0;  // in-scattering read from the fluence volumes
 }
 // Whether light l's light comes through the fluence volumes, not straight.
 inline bool lightInFluence(const GpuViewParams& p, int l) {
