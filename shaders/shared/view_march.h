@@ -26,7 +26,7 @@ vec3 fluenceInScattering(vec3 p, vec3 dir, vec3 sigma[EK_MAX_MATERIALS]) {
     const float cosTheta = directed ? dot(weightedDir / len, -dir) : 0.0f;
     vec3 scattered = vec3(0.0f);
     for (int m = 0; m < materialCount(params); ++m)
-        scattered += sigma[m] * (directed ? phaseHG(params.materials[m].absorption.w, cosTheta)
+        scattered += sigma[m] * (directed ? phaseHG(materialPhaseG(params.materials[m]), cosTheta)
                                           : 1.0f / (4.0f * EK_PI));
     return scattered * fluenceRate;
 }
@@ -45,7 +45,7 @@ vec3 lightShadow(int l, vec3 x, vec3 p, vec3 toLight, float lightDistance) {
 // are not yet cut by it: fluence rate times the net flux's cosine with the normal,
 // |Σ lum·dir| ≤ lum(Σ flux·length) making that factor a cosine in [0, 1].
 vec3 receiverFluenceIrradiance(int r, vec3 x) {
-    if (int(params.receivers[r].plane.w) == EK_RECEIVER_PLANE) {
+    if (receiverKind(params.receivers[r]) == EK_RECEIVER_PLANE) {
         ivec4 index;
         vec4 weight;
         receiverBilinear(r, receiverMapCoord(r, x), index, weight);
@@ -96,7 +96,7 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
     vec3 sigma[EK_MAX_MATERIALS];
     bool scatters = false;
     for (int m = 0; m < materialCount(params); ++m) {
-        const float field = sampleField(params.materials[m].slot.x, p);
+        const float field = sampleField(materialSlot(params.materials[m]), p);
         sigma[m] = field * vec3(params.materials[m].scattering);
         kappa += field * vec3(params.materials[m].absorption) + sigma[m];
         source += field * vec3(params.materials[m].emission);
@@ -114,7 +114,7 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
             const float cosTheta = dot(-toLight, -dir);
             vec3 scattered = vec3(0.0f);
             for (int m = 0; m < materialCount(params); ++m)
-                scattered += sigma[m] * phaseHG(params.materials[m].absorption.w, cosTheta);
+                scattered += sigma[m] * phaseHG(materialPhaseG(params.materials[m]), cosTheta);
             source += scattered * irradiance * lightShadow(l, x, p, toLight, lightDistance);
         }
     }
