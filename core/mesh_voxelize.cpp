@@ -79,6 +79,14 @@ InsideBits voxelizeInsideCpu(const TriangleMesh& mesh, glm::vec3 gridMin, glm::v
     return out;
 }
 
+int voxelizeSupersample() {
+    return shared::VoxelizeKernelCpu::EK_VOXELIZE_SUPERSAMPLE;
+}
+
+int voxelizeWordsPerColumn(int fineResolutionZ) {
+    return shared::VoxelizeKernelCpu{nullptr, nullptr, 0}.voxelizeWordsPerColumn(fineResolutionZ);
+}
+
 std::vector<float> voxelizeCoverageCpu(const TriangleMesh& mesh, const RenderVolume& volume) {
     using shared::VoxelizeKernelCpu;
     const glm::ivec3 res = volume.resolution;

@@ -40,6 +40,12 @@ void checkMeshForVoxelization(const TriangleMesh& mesh, const std::string& what)
 InsideBits voxelizeInsideCpu(const TriangleMesh& mesh, glm::vec3 gridMin, glm::vec3 cellSize,
                              glm::ivec3 resolution);
 
+// The fine grid's samples per render voxel and axis (EK_VOXELIZE_SUPERSAMPLE), and the 32-bit
+// words of one fine column of `fineResolutionZ` samples, as shaders/shared/voxelize.h defines
+// them: the GPU twin sizes its grid and buffers by these, not by copies of the numbers.
+int voxelizeSupersample();
+int voxelizeWordsPerColumn(int fineResolutionZ);
+
 // Coverage of each render voxel in [0, 1] (x fastest, like DenseGrid): the fraction of its
 // 4×4×4 samples inside, from voxelizeInsideCpu on the grid 4 times finer. The CPU twin of
 // MeshVoxelizerGpu (render/voxelize.h).

@@ -83,9 +83,9 @@ std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
         p.volumeMax.y,         p.volumeMax.z,   float(p.resolution.x), float(p.resolution.y),
         float(p.resolution.z), float(materials)};
     for (int m = 0; m < materials; ++m) {
-        values.push_back(p.materials[m].emission.w);
-        values.push_back(p.materials[m].scattering.w);  // Gladstone–Dale's 1/T_ambient
-        values.push_back(float(p.materials[m].slot.x));
+        values.push_back(shared::materialIndexSlope(p.materials[m]));
+        values.push_back(shared::materialInverseAmbient(p.materials[m]));
+        values.push_back(float(shared::materialSlot(p.materials[m])));
     }
     std::vector<unsigned char> key;
     appendBytes(key, values.data(), values.size() * sizeof(float));

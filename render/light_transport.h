@@ -17,8 +17,8 @@
 //    (shadowMode(params) == EK_SHADOWS_MARCHED);
 //  - lights lit through the fluence (lightInFluence, readsFluence) come summed in one
 //    fluence volume (rgb: Σ flux·length per voxel) and one mean-direction volume (xyz: the
-//    luminance-weighted sum of the directions light travels), units EK_UNIT_PHOTON_RADIANCE and
-//    EK_UNIT_PHOTON_DIRECTION on the GPU;
+//    luminance-weighted sum of the directions light travels), units EK_UNIT_FLUENCE and
+//    EK_UNIT_FLUENCE_DIRECTION on the GPU;
 //  - receivers read their irradiance map (SSBO EK_SSBO_RECEIVER_MAP; every binding is named in
 //    shaders/shared/bindings.h) for the lights in the fluence.
 #include <cstdint>

@@ -11,7 +11,8 @@ namespace eikon {
 size_t receiverMapTexels(const shared::GpuViewParams& params) {
     size_t texels = 0;
     for (int r = 0; r < shared::receiverCount(params); ++r)
-        texels += size_t(params.receivers[r].texels.x) * size_t(params.receivers[r].texels.y);
+        texels += size_t(shared::receiverMapWidth(params.receivers[r])) *
+                  size_t(shared::receiverMapHeight(params.receivers[r]));
     return texels;
 }
 

@@ -14,7 +14,8 @@
 
 namespace eikon {
 
-// Texels of every receiver's map (receiverCount(params) receivers, texels.x × texels.y each).
+// Texels of every receiver's map (receiverCount(params) receivers, receiverMapWidth ×
+// receiverMapHeight each).
 size_t receiverMapTexels(const shared::GpuViewParams& params);
 
 // rgb = Σ flux / texel area (power per area) from the fixed-point sums (3 per texel) and their

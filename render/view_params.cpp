@@ -80,7 +80,7 @@ void packReceivers(const Scene& scene, const RenderVolume& volume, shared::GpuVi
         const int tpv = plane ? spec.texelsPerVoxel : 0;
         g.texels = glm::ivec4(volume.resolution[(spec.axis + 1) % 3] * tpv,
                               volume.resolution[(spec.axis + 2) % 3] * tpv, offset, 0);
-        offset += g.texels.x * g.texels.y;
+        offset += shared::receiverMapWidth(g) * shared::receiverMapHeight(g);
     }
     shared::setReceiverCount(p, int(scene.receivers.size()));
 }

@@ -32,8 +32,8 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
             size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z);
         if (!light.fluence || !light.direction || light.fluenceVoxels != voxels)
             throw Error("view pass (CPU)", "lighting through the fluence needs its volumes");
-        kernel.photonRadiance = light.fluence;
-        kernel.photonDirection = light.direction;
+        kernel.fluence = light.fluence;
+        kernel.fluenceDirection = light.direction;
         if (light.receiverTexels != receiverMapTexels(p))
             throw Error("view pass (CPU)", "the receiver map was not computed");
         kernel.receiverMap = light.receiverMap;

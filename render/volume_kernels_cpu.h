@@ -14,9 +14,11 @@ struct VolumeAccessCpu {
     const GpuViewParams& params;
     const float* fields[EK_MAX_MATERIALS] = {};
     const vec4* lights[EK_MAX_LIGHTS] = {};
-    const vec4* gradient = nullptr;         // the ∇n volume, for curved rays
-    const vec4* photonRadiance = nullptr;   // the smoothed photon volumes, when the view reads
-    const vec4* photonDirection = nullptr;  // them (readsFluence)
+    const vec4* gradient = nullptr;  // the ∇n volume, for curved rays
+    // The output contract's fluence and mean-direction volumes (render/light_transport.h), when
+    // the view reads them (readsFluence).
+    const vec4* fluence = nullptr;
+    const vec4* fluenceDirection = nullptr;
 
     size_t voxelIndex(ivec3 v) const {
         return (size_t(v.z) * size_t(params.resolution.y) + size_t(v.y)) *
@@ -29,8 +31,8 @@ struct VolumeAccessCpu {
     }
     vec4 fetchLightVoxel(int light, ivec3 v) const { return lights[light][voxelIndex(v)]; }
     vec4 fetchGradientVoxel(ivec3 v) const { return gradient[voxelIndex(v)]; }
-    vec4 fetchPhotonRadianceVoxel(ivec3 v) const { return photonRadiance[voxelIndex(v)]; }
-    vec4 fetchPhotonDirectionVoxel(ivec3 v) const { return photonDirection[voxelIndex(v)]; }
+    vec4 fetchFluenceVoxel(ivec3 v) const { return fluence[voxelIndex(v)]; }
+    vec4 fetchFluenceDirectionVoxel(ivec3 v) const { return fluenceDirection[voxelIndex(v)]; }
 
     // The shared files are order-sensitive in GLSL; keep their order here too.
     // clang-format off
@@ -48,7 +50,7 @@ struct ViewKernelCpu : VolumeAccessCpu {
     vec4 fetchEnvironment(ivec2 t) const {
         return environment[size_t(t.y) * size_t(environmentWidth(params)) + size_t(t.x)];
     }
-    // The receiver map (render/receiver_map.h), when a receiver reads photons.
+    // The receiver map (render/receiver_map.h), when a receiver reads the fluence.
     const vec4* receiverMap = nullptr;
     vec4 fetchReceiverTexel(int index) const { return receiverMap[size_t(index)]; }
 

@@ -11,8 +11,6 @@ namespace eikon {
 
 namespace {
 
-constexpr int kSupersample = 4;  // EK_VOXELIZE_SUPERSAMPLE (shaders/shared/voxelize.h)
-
 template <typename T>
 void uploadBuffer(GLuint& buffer, const std::vector<T>& data) {
     if (!buffer) glGenBuffers(1, &buffer);
@@ -72,9 +70,11 @@ std::vector<float> MeshVoxelizerGpu::voxelizeToHost(const TriangleMesh& mesh,
 void MeshVoxelizerGpu::voxelize(const TriangleMesh& mesh, const RenderVolume& volume,
                                 unsigned target) {
     const glm::ivec3 res = volume.resolution;
-    const glm::ivec3 fineRes = res * kSupersample;
-    const glm::vec3 fineVoxel = volume.voxelSize() / float(kSupersample);
-    const int words = (fineRes.z + 31) / 32;
+    // The fine grid of shaders/shared/voxelize.h, by its own constants (core/mesh_voxelize.h).
+    const int supersample = voxelizeSupersample();
+    const glm::ivec3 fineRes = res * supersample;
+    const glm::vec3 fineVoxel = volume.voxelSize() / float(supersample);
+    const int words = voxelizeWordsPerColumn(fineRes.z);
     const size_t columns = size_t(fineRes.x) * size_t(fineRes.y);
 
     std::vector<glm::vec4> positions;

@@ -21,11 +21,11 @@ layout(binding = EK_UNIT_FIELDS) uniform sampler3D fieldTex;
 layout(binding = EK_UNIT_LIGHT_TRANSMITTANCE) uniform sampler3D lightTex;
 // RGBA32F: xyz = ∇n, w = n (curved rays).
 layout(binding = EK_UNIT_GRADIENT) uniform sampler3D gradientTex;
-// EK_UNIT_OCTREE is the photon pass's octree. The smoothed photon volumes
-// (render/transport/photons/photon_radiance.h), RGBA32F: rgb = Σ flux·length, and xyz = Σ
+// EK_UNIT_OCTREE is the photon pass's octree. The light-transport method's fluence volumes (the
+// output contract, render/light_transport.h), RGBA32F: rgb = Σ flux·length, and xyz = Σ
 // weighted direction.
-layout(binding = EK_UNIT_PHOTON_RADIANCE) uniform sampler3D photonRadianceTex;
-layout(binding = EK_UNIT_PHOTON_DIRECTION) uniform sampler3D photonDirectionTex;
+layout(binding = EK_UNIT_FLUENCE) uniform sampler3D fluenceTex;
+layout(binding = EK_UNIT_FLUENCE_DIRECTION) uniform sampler3D fluenceDirectionTex;
 // The equirectangular environment image (RGBA32F), when environmentType(params) asks for it.
 layout(binding = EK_UNIT_ENVIRONMENT) uniform sampler2D environmentTex;
 
@@ -40,8 +40,8 @@ vec4 fetchLightVoxel(int light, ivec3 voxel) {
     return texelFetch(lightTex, stackedVoxel(light, voxel), 0);
 }
 vec4 fetchGradientVoxel(ivec3 voxel) { return texelFetch(gradientTex, voxel, 0); }
-vec4 fetchPhotonRadianceVoxel(ivec3 voxel) { return texelFetch(photonRadianceTex, voxel, 0); }
-vec4 fetchPhotonDirectionVoxel(ivec3 voxel) { return texelFetch(photonDirectionTex, voxel, 0); }
+vec4 fetchFluenceVoxel(ivec3 voxel) { return texelFetch(fluenceTex, voxel, 0); }
+vec4 fetchFluenceDirectionVoxel(ivec3 voxel) { return texelFetch(fluenceDirectionTex, voxel, 0); }
 
 // Exact texels: the shared code filters, so the GPU matches the CPU twin.
 vec4 fetchEnvironment(ivec2 texel) { return texelFetch(environmentTex, texel, 0); }
@@ -64,11 +64,11 @@ vec4 filterLightVolume(int light, vec3 indexPos) {
     return filterStacked(lightTex, light, indexPos);
 }
 vec4 filterGradientVolume(vec3 indexPos) { return filterStacked(gradientTex, 0, indexPos); }
-vec4 filterPhotonRadianceVolume(vec3 indexPos) {
-    return filterStacked(photonRadianceTex, 0, indexPos);
+vec4 filterFluenceVolume(vec3 indexPos) {
+    return filterStacked(fluenceTex, 0, indexPos);
 }
-vec4 filterPhotonDirectionVolume(vec3 indexPos) {
-    return filterStacked(photonDirectionTex, 0, indexPos);
+vec4 filterFluenceDirectionVolume(vec3 indexPos) {
+    return filterStacked(fluenceDirectionTex, 0, indexPos);
 }
 #endif
 

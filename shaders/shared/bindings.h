@@ -22,8 +22,8 @@
 #define EK_UNIT_LIGHT_TRANSMITTANCE 1  // RGBA32F: one transmittance volume per light, stacked in z
 #define EK_UNIT_GRADIENT 2             // RGBA32F: xyz = ∇n, w = n (curved rays, photons)
 #define EK_UNIT_OCTREE 3               // RGBA32F: the photon march's octree (photon_trace.comp)
-#define EK_UNIT_PHOTON_RADIANCE 4      // RGBA32F: the smoothed photon volume, rgb = Σ flux·length
-#define EK_UNIT_PHOTON_DIRECTION 5     // RGBA32F: xyz = Σ luminance-weighted direction
+#define EK_UNIT_FLUENCE 4              // RGBA32F: the method's fluence, rgb = Σ flux·length
+#define EK_UNIT_FLUENCE_DIRECTION 5    // RGBA32F: xyz = Σ luminance-weighted direction
 #define EK_UNIT_ENVIRONMENT 6          // RGBA32F 2D: the equirectangular environment image
 // The display pass (shaders/display.frag), a graphics program of its own.
 #define EK_UNIT_DISPLAY_IMAGE 0  // RGBA32F 2D: the linear image shown

@@ -25,38 +25,48 @@ EK_NAMESPACE_BEGIN
 #define EK_ENVIRONMENT_GRADIENT 1  // zenith, horizon and ground colours blended by elevation
 #define EK_ENVIRONMENT_IMAGE 2     // an equirectangular image (fetchEnvironment) × intensity
 
-// How a receiver (shaders/shared/receivers.h) learns the irradiance photons bring it.
-#define EK_RECEIVER_PLANE 0   // from the map of the flux of photons crossing the plane
-#define EK_RECEIVER_VOXELS 1  // from the photon volumes beside the plane (Sun et al.'s floors)
+// How a receiver (shaders/shared/receivers.h) learns the irradiance of the lights in the fluence.
+#define EK_RECEIVER_PLANE 0   // from its receiver map: the flux crossing the plane, per area
+#define EK_RECEIVER_VOXELS 1  // from the fluence volumes beside the plane (Sun et al.'s floors)
 
 // fetchVolume slots after the fields (0..) and the light volumes: the ∇n volume (xyz = ∇n, w = n).
 #define EK_GRADIENT_SLOT (EK_MAX_MATERIALS + EK_MAX_LIGHTS)
-// The smoothed photon volumes (render/transport/photons/photon_radiance.h): rgb = Σ flux·length per
-// voxel (power × scene units), and xyz = the luminance-weighted sum of the directions the light
-// travels.
-#define EK_PHOTON_RADIANCE_SLOT (EK_GRADIENT_SLOT + 1)
-#define EK_PHOTON_DIRECTION_SLOT (EK_GRADIENT_SLOT + 2)
+// The light-transport method's fluence volumes, the output contract the view reads
+// (render/light_transport.h; the photons' are their smoothed deposits,
+// render/transport/photons/photon_radiance.h): rgb = Σ flux·length per voxel (power × scene
+// units), and xyz = the luminance-weighted sum of the directions the light travels.
+#define EK_FLUENCE_SLOT (EK_GRADIENT_SLOT + 1)
+#define EK_FLUENCE_DIRECTION_SLOT (EK_GRADIENT_SLOT + 2)
 
 // One material: optics per unit of its field's value (see core/scene.h).
+// The packed members are read through the accessors below (materialPhaseG(m), ...).
 struct GpuMaterial {
-    vec4 absorption;  // rgb: per scene unit; w: Henyey–Greenstein g
-    vec4 scattering;  // rgb: per scene unit; w: 1/T_ambient for Gladstone–Dale air, else 0
-    vec4 emission;    // rgb: radiance per scene unit; w: n − 1 per unit of the field (ior − 1)
-    ivec4 slot;       // x: which field texture the material reads; yzw: unused
+    vec4 absorption;  // rgb: per scene unit; w: Henyey–Greenstein g (materialPhaseG)
+    // rgb: per scene unit; w: 1/T_ambient for Gladstone–Dale air, else 0 (materialInverseAmbient)
+    vec4 scattering;
+    // rgb: radiance per scene unit; w: n − 1 per unit of the field, ior − 1 (materialIndexSlope)
+    vec4 emission;
+    ivec4 slot;  // x: which field texture the material reads (materialSlot); yzw: unused
 };
 
 struct GpuLight {
-    vec4 position;   // xyz: world position (point, spot); w: type (EK_LIGHT_*)
+    vec4 position;   // xyz: world position (point, spot); w: type, EK_LIGHT_* (lightType)
     vec4 direction;  // xyz: unit direction the light travels (directional, spot); w: cos(outer)
+                     // (lightCosOuter)
     vec4 radiance;   // rgb: colour × intensity; w: cos(inner), where the spot edge starts
+                     // (lightCosInner)
 };
 
 // A diffuse plane across the volume (core/scene.h ReceiverSpec). Its map has texels.x × texels.y
 // texels over the volume's extent along the plane's axes u = (axis + 1) % 3 (x fastest) and
 // w = (axis + 2) % 3, stored from index texels.z of the receiver map.
 struct GpuReceiver {
-    vec4 plane;   // x: normal axis (0, 1, 2); y: position on it; z: facing (±1); w: EK_RECEIVER_*
+    // x: normal axis, 0, 1, 2 (receiverAxis); y: position on it (receiverPosition); z: facing, ±1
+    // (receiverFacing); w: EK_RECEIVER_* (receiverKind)
+    vec4 plane;
     vec4 albedo;  // rgb: diffuse reflectance; w: unused
+    // x, y: texels along u and w (receiverMapWidth, receiverMapHeight); z: the index of its first
+    // texel in the receiver map (receiverMapStart); w: unused
     ivec4 texels;
 };
 
@@ -72,8 +82,8 @@ struct GpuViewParams {
     ivec4 image;         // x, y: pixels; z: light count (lightCount); w: EK_SHADOWS_* (shadowMode)
     vec4 background;     // rgb radiance; w: a ray stops below it (minTransmittance)
     // The packed flags, read through the accessors below. x: 1 = curved view rays through the ∇n
-    // volume, 0 = straight (curvedRays); y: 1 = in-scattering read from the photon volumes
-    // (readsFluence); z: bit l set = light l's light reaches the medium through the photon
+    // volume, 0 = straight (curvedRays); y: 1 = in-scattering read from the fluence volumes
+    // (readsFluence); z: bit l set = light l's light reaches the medium through the fluence
     // volumes, not through its light volume (lightInFluence); w: receiver count (receiverCount).
     ivec4 pipeline;
     // The environment (shaders/shared/environment.h). x: EK_ENVIRONMENT_* (environmentType); y, z:
@@ -100,7 +110,7 @@ inline bool curvedRays(const GpuViewParams& p) {
     return p.pipeline.x != 0;  // view rays bend through the ∇n volume
 }
 inline bool readsFluence(const GpuViewParams& p) {
-    return p.pipeline.y != 0;  // in-scattering read from the photon (fluence) volumes
+    return p.pipeline.y != 0;  // in-scattering read from the fluence volumes
 }
 // Whether light l's light comes through the fluence volumes, not straight.
 inline bool lightInFluence(const GpuViewParams& p, int l) {
@@ -178,6 +188,69 @@ inline float environmentRotationSin(const GpuViewParams& p) {
 #define environmentIntensity(p) ((p).environmentSky.x)
 #define environmentRotationCos(p) ((p).environmentSky.y)
 #define environmentRotationSin(p) ((p).environmentSky.z)
+#endif
+
+// Named reads of the packed members of one material, light or receiver, the same way: C++
+// functions, GLSL macros over the same expressions (materialPhaseG(params.materials[m]), never
+// materialPhaseG(params.materials[m])). Keep the two lists equal.
+#ifdef __cplusplus
+inline float materialPhaseG(const GpuMaterial& m) {
+    return m.absorption.w;  // Henyey–Greenstein g
+}
+inline float materialInverseAmbient(const GpuMaterial& m) {
+    return m.scattering.w;  // 1/T_ambient for Gladstone–Dale air, else 0 (material_index.h)
+}
+inline float materialIndexSlope(const GpuMaterial& m) {
+    return m.emission.w;  // ior − 1: n − 1 per unit of the field at f = 0 (material_index.h)
+}
+inline int materialSlot(const GpuMaterial& m) {
+    return m.slot.x;  // the field slot the material reads (fetchVolume)
+}
+inline int lightType(const GpuLight& l) {
+    return int(l.position.w);  // EK_LIGHT_*
+}
+inline float lightCosOuter(const GpuLight& l) {
+    return l.direction.w;  // a spot light's cone: no light outside
+}
+inline float lightCosInner(const GpuLight& l) {
+    return l.radiance.w;  // a spot light's cone: full light inside
+}
+inline int receiverAxis(const GpuReceiver& r) {
+    return int(r.plane.x);  // the normal's axis, 0, 1 or 2
+}
+inline float receiverPosition(const GpuReceiver& r) {
+    return r.plane.y;  // the plane's world coordinate along its axis
+}
+inline float receiverFacing(const GpuReceiver& r) {
+    return r.plane.z;  // ±1: the front face's normal along the axis
+}
+inline int receiverKind(const GpuReceiver& r) {
+    return int(r.plane.w);  // EK_RECEIVER_*
+}
+inline int receiverMapWidth(const GpuReceiver& r) {
+    return r.texels.x;  // texels along u = (axis + 1) % 3
+}
+inline int receiverMapHeight(const GpuReceiver& r) {
+    return r.texels.y;  // texels along w = (axis + 2) % 3
+}
+inline int receiverMapStart(const GpuReceiver& r) {
+    return r.texels.z;  // the index of its first texel in the receiver map
+}
+#else
+#define materialPhaseG(m) ((m).absorption.w)
+#define materialInverseAmbient(m) ((m).scattering.w)
+#define materialIndexSlope(m) ((m).emission.w)
+#define materialSlot(m) ((m).slot.x)
+#define lightType(l) (int((l).position.w))
+#define lightCosOuter(l) ((l).direction.w)
+#define lightCosInner(l) ((l).radiance.w)
+#define receiverAxis(r) (int((r).plane.x))
+#define receiverPosition(r) ((r).plane.y)
+#define receiverFacing(r) ((r).plane.z)
+#define receiverKind(r) (int((r).plane.w))
+#define receiverMapWidth(r) ((r).texels.x)
+#define receiverMapHeight(r) ((r).texels.y)
+#define receiverMapStart(r) ((r).texels.z)
 #endif
 
 #ifdef __cplusplus

@@ -15,7 +15,7 @@
 
 bool sweepsLight(int l) {
     return shadowMode(params) == EK_SHADOWS_SWEPT &&
-           int(params.lights[l].position.w) == EK_LIGHT_DIRECTIONAL;
+           lightType(params.lights[l]) == EK_LIGHT_DIRECTIONAL;
 }
 
 // The axis a directional light is swept along, and the order: +1 when it travels toward +axis.

@@ -34,7 +34,7 @@ vec2 intersectVolume(vec3 origin, vec3 dir) {
 vec3 extinctionAt(vec3 indexPos) {
     vec3 kappa = vec3(0.0f);
     for (int m = 0; m < materialCount(params); ++m) {
-        const float f = sampleField(params.materials[m].slot.x, indexPos);
+        const float f = sampleField(materialSlot(params.materials[m]), indexPos);
         kappa += f * (vec3(params.materials[m].absorption) + vec3(params.materials[m].scattering));
     }
     return kappa;
@@ -45,7 +45,7 @@ vec3 extinctionAt(vec3 indexPos) {
 float voxelExtinctionMax(ivec3 voxel) {
     vec3 kappa = vec3(0.0f);
     for (int m = 0; m < materialCount(params); ++m) {
-        const float f = fetchVolume(params.materials[m].slot.x, voxel).x;
+        const float f = fetchVolume(materialSlot(params.materials[m]), voxel).x;
         kappa += f * (vec3(params.materials[m].absorption) + vec3(params.materials[m].scattering));
     }
     return max(kappa.x, max(kappa.y, kappa.z));
@@ -69,7 +69,7 @@ vec3 transmittanceToward(vec3 x, vec3 toLight, float maxDistance) {
 // Unshadowed irradiance from light l at x; also the unit direction toward it and its distance.
 vec3 lightIrradiance(int l, vec3 x, EK_OUT(vec3) toLight, EK_OUT(float) lightDistance) {
     const GpuLight light = params.lights[l];
-    const int type = int(light.position.w);
+    const int type = lightType(light);
     const vec3 radiance = vec3(light.radiance);
     if (type == EK_LIGHT_DIRECTIONAL) {
         toLight = -vec3(light.direction);
@@ -82,7 +82,7 @@ vec3 lightIrradiance(int l, vec3 x, EK_OUT(vec3) toLight, EK_OUT(float) lightDis
     float falloff = 1.0f / (lightDistance * lightDistance);
     if (type == EK_LIGHT_SPOT) {
         const float c = dot(-toLight, vec3(light.direction));
-        falloff *= smoothstep(light.direction.w, light.radiance.w, c);
+        falloff *= smoothstep(lightCosOuter(light), lightCosInner(light), c);
     }
     return radiance * falloff;
 }

@@ -204,7 +204,7 @@ vec4 perspectiveRect(GpuLight light, int grid, vec3 a, vec3 u, vec3 w, EK_OUT(fl
         r = vec4(min(r.x, s), min(r.y, t), max(r.z, s), max(r.w, t));
     }
     if (grid != EK_PHOTON_GRID_SPOT) return r;
-    const float c = light.direction.w;
+    const float c = lightCosOuter(light);
     const float halfWidth = sqrt(max(1.0f - c * c, 0.0f)) / c;
     if (!(minCos > 0.0f)) return vec4(-halfWidth, -halfWidth, halfWidth, halfWidth);
     return vec4(max(r.x, -halfWidth), max(r.y, -halfWidth), min(r.z, halfWidth),
@@ -222,7 +222,7 @@ float rectArea(vec4 r) {
 // the light (a light inside the box, or close beside it).
 int photonGrid(int l) {
     const GpuLight light = params.lights[l];
-    const int type = int(light.position.w);
+    const int type = lightType(light);
     if (type == EK_LIGHT_DIRECTIONAL) return EK_PHOTON_GRID_PARALLEL;
     int grid = EK_PHOTON_GRID_CUBE;
     float area = 3.0e38f;
@@ -236,7 +236,7 @@ int photonGrid(int l) {
         grid = EK_PHOTON_GRID_BOX;
         area = rectArea(r);
     }
-    if (type == EK_LIGHT_SPOT && light.direction.w >= EK_PHOTON_GRID_MIN_COS) {
+    if (type == EK_LIGHT_SPOT && lightCosOuter(light) >= EK_PHOTON_GRID_MIN_COS) {
         a = perspectiveAxis(light, EK_PHOTON_GRID_SPOT);
         lightPlaneBasis(a, u, w);
         r = perspectiveRect(light, EK_PHOTON_GRID_SPOT, a, u, w, minCos);
@@ -289,8 +289,8 @@ GpuPhoton generatePointPhoton(int l, int grid, int photonsPerSide, int index, ui
     // 1 + s² + t² from the plane coordinates, not |a + s u + t w|²: exact for the ideal frame.
     const float r2 = 1.0f + q.x * q.x + q.y * q.y;
     float solidAngle = cellArea / (r2 * sqrt(r2));
-    if (int(light.position.w) == EK_LIGHT_SPOT)
-        solidAngle *= smoothstep(light.direction.w, light.radiance.w,
+    if (lightType(light) == EK_LIGHT_SPOT)
+        solidAngle *= smoothstep(lightCosOuter(light), lightCosInner(light),
                                  dot(d, normalize(vec3(light.direction))));
     return startPhoton(vec3(light.position), d, vec3(light.radiance) * solidAngle,
                        relativeThreshold);
@@ -448,7 +448,7 @@ int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, EK_INOUT(vec3) extingu
     photon.flux = vec4(fluxNext, photon.flux.w);
     if (receiver >= 0) {
         // Voxel receivers have no map: the photon volumes beside them hold their light.
-        if (front && int(params.receivers[receiver].plane.w) == EK_RECEIVER_PLANE)
+        if (front && receiverKind(params.receivers[receiver]) == EK_RECEIVER_PLANE)
             depositOnReceiver(receiver, next, fluxNext);
         return EK_PHOTON_RECEIVED;
     }

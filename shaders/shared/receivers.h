@@ -5,12 +5,13 @@
 // A receiver r is the plane x[axis] = position; its front half-space is facing·(x[axis] −
 // position) > 0. A segment a → b hits it where that signed distance changes sign; it hits the
 // front face when a lies in front. The map of a plane receiver covers the volume's extent along
-// the axes u = (axis + 1) % 3 and w = (axis + 2) % 3 with texels.x × texels.y texels; texel
-// (i, j) covers [i, i + 1) × [j, j + 1) in map coordinates, x fastest, from index texels.z.
+// the axes u = (axis + 1) % 3 and w = (axis + 2) % 3 with receiverMapWidth × receiverMapHeight
+// texels; texel (i, j) covers [i, i + 1) × [j, j + 1) in map coordinates, x fastest, from index
+// receiverMapStart (the accessors of GpuReceiver, gpu_types.h).
 
 float receiverSide(int r, vec3 x) {
-    const vec4 plane = params.receivers[r].plane;
-    return plane.z * (x[int(plane.x)] - plane.y);
+    const GpuReceiver receiver = params.receivers[r];
+    return receiverFacing(receiver) * (x[receiverAxis(receiver)] - receiverPosition(receiver));
 }
 
 // The first receiver the segment a → b reaches (smallest fraction t ∈ [0, 1] along it), or −1.
@@ -37,52 +38,55 @@ int receiverCrossing(vec3 a, vec3 b, EK_OUT(float) t, EK_OUT(bool) front) {
 // The point a fraction t along a → b, placed exactly on receiver r's plane.
 vec3 receiverHitPoint(int r, vec3 a, vec3 b, float t) {
     vec3 x = a + (b - a) * t;
-    const vec4 plane = params.receivers[r].plane;
-    x[int(plane.x)] = plane.y;
+    const GpuReceiver receiver = params.receivers[r];
+    x[receiverAxis(receiver)] = receiverPosition(receiver);
     return x;
 }
 
 // The unit normal of receiver r's front face.
 vec3 receiverNormal(int r) {
-    const vec4 plane = params.receivers[r].plane;
+    const GpuReceiver receiver = params.receivers[r];
     vec3 n = vec3(0.0f);
-    n[int(plane.x)] = plane.z;
+    n[receiverAxis(receiver)] = receiverFacing(receiver);
     return n;
 }
 
 // The continuous map coordinates of world point x on receiver r's map, texel centres at half
 // integers.
 vec2 receiverMapCoord(int r, vec3 x) {
-    const int axis = int(params.receivers[r].plane.x);
+    const GpuReceiver receiver = params.receivers[r];
+    const int axis = receiverAxis(receiver);
     const int u = (axis + 1) % 3;
     const int w = (axis + 2) % 3;
-    const ivec4 texels = params.receivers[r].texels;
     return vec2((x[u] - params.volumeMin[u]) / (params.volumeMax[u] - params.volumeMin[u]) *
-                    float(texels.x),
+                    float(receiverMapWidth(receiver)),
                 (x[w] - params.volumeMin[w]) / (params.volumeMax[w] - params.volumeMin[w]) *
-                    float(texels.y));
+                    float(receiverMapHeight(receiver)));
 }
 
 // The four texels around map coordinate q (bilinear, texel centres at half integers, clamped to
 // the map's edge) as indices into the receiver map, and their weights.
 void receiverBilinear(int r, vec2 q, EK_OUT(ivec4) index, EK_OUT(vec4) weight) {
-    const ivec4 texels = params.receivers[r].texels;
+    const GpuReceiver receiver = params.receivers[r];
+    const int width = receiverMapWidth(receiver);
+    const int height = receiverMapHeight(receiver);
+    const int start = receiverMapStart(receiver);
     const vec2 p = q - vec2(0.5f);
     const vec2 base = floor(p);
     const vec2 f = p - base;
-    const ivec2 i0 = clamp(ivec2(base), ivec2(0), ivec2(texels.x - 1, texels.y - 1));
-    const ivec2 i1 = clamp(ivec2(base) + ivec2(1), ivec2(0), ivec2(texels.x - 1, texels.y - 1));
-    index = ivec4(texels.z + i0.y * texels.x + i0.x, texels.z + i0.y * texels.x + i1.x,
-                  texels.z + i1.y * texels.x + i0.x, texels.z + i1.y * texels.x + i1.x);
+    const ivec2 i0 = clamp(ivec2(base), ivec2(0), ivec2(width - 1, height - 1));
+    const ivec2 i1 = clamp(ivec2(base) + ivec2(1), ivec2(0), ivec2(width - 1, height - 1));
+    index = ivec4(start + i0.y * width + i0.x, start + i0.y * width + i1.x,
+                  start + i1.y * width + i0.x, start + i1.y * width + i1.x);
     weight = vec4((1.0f - f.x) * (1.0f - f.y), f.x * (1.0f - f.y), (1.0f - f.x) * f.y, f.x * f.y);
 }
 
 // The area of one texel of receiver r's map, in scene units².
 float receiverTexelArea(int r) {
-    const int axis = int(params.receivers[r].plane.x);
+    const GpuReceiver receiver = params.receivers[r];
+    const int axis = receiverAxis(receiver);
     const int u = (axis + 1) % 3;
     const int w = (axis + 2) % 3;
-    const ivec4 texels = params.receivers[r].texels;
-    return (params.volumeMax[u] - params.volumeMin[u]) / float(texels.x) *
-           ((params.volumeMax[w] - params.volumeMin[w]) / float(texels.y));
+    return (params.volumeMax[u] - params.volumeMin[u]) / float(receiverMapWidth(receiver)) *
+           ((params.volumeMax[w] - params.volumeMin[w]) / float(receiverMapHeight(receiver)));
 }

@@ -4,8 +4,8 @@
 //
 // Each material adds materialIndexExcess(f) for its field value f to vacuum's n = 1 (f·(ior − 1)
 // for ordinary materials), so fields that fade out fade to n = 1 and overlapping materials add
-// their excess index. emission.w holds ior − 1 (the
-// slope at f = 0); Gladstone–Dale materials carry 1/T_ambient in scattering.w.
+// their excess index. materialIndexSlope(m) is ior − 1 (the slope at f = 0); Gladstone–Dale
+// materials carry 1/T_ambient in materialInverseAmbient(m) (emission.w and scattering.w).
 
 // EK_PRECISE (platform.h) keeps the GLSL compiler from reassociating the sum (Mesa turned
 // f·(ior − 1) + n into a different rounding, 1 ulp off the CPU twin).
@@ -13,9 +13,9 @@
 float refractiveIndexAt(vec3 indexPos) {
     EK_PRECISE float n = 1.0f;
     for (int m = 0; m < materialCount(params); ++m) {
-        const float f = sampleField(params.materials[m].slot.x, indexPos);
-        n += materialIndexExcess(f, params.materials[m].emission.w,
-                                 params.materials[m].scattering.w);
+        const float f = sampleField(materialSlot(params.materials[m]), indexPos);
+        n += materialIndexExcess(f, materialIndexSlope(params.materials[m]),
+                                 materialInverseAmbient(params.materials[m]));
     }
     return n;
 }
@@ -26,9 +26,9 @@ float refractiveIndexAt(vec3 indexPos) {
 float refractiveIndexAtVoxel(ivec3 v) {
     EK_PRECISE float n = 1.0f;
     for (int m = 0; m < materialCount(params); ++m) {
-        const float f = fetchVolume(params.materials[m].slot.x, v).x;
-        n += materialIndexExcess(f, params.materials[m].emission.w,
-                                 params.materials[m].scattering.w);
+        const float f = fetchVolume(materialSlot(params.materials[m]), v).x;
+        n += materialIndexExcess(f, materialIndexSlope(params.materials[m]),
+                                 materialInverseAmbient(params.materials[m]));
     }
     return n;
 }

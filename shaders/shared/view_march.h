@@ -1,34 +1,34 @@
 // The viewing pass: emission, absorption and single scattering of every light. A light's light
-// reaches the medium through the smoothed photon volumes (lightInFluence; light bent and
-// focused by refraction) or straight, with its transmittance (shadowing) taken from the light
-// volume (light_volume.h) or, as reference, marched toward the light from every sample (like
-// vdb_render). Rays that leave the volume see environmentRadiance (environment.h); rays that reach
-// a receiver (receivers.h) stop there and see its diffuse reflection. Needs optics.h, receivers.h,
-// environment.h and, from the includer, `vec4 fetchReceiverTexel(int index)`: the irradiance
-// (rgb) of a texel of the receiver map.
+// reaches the medium through the light-transport method's fluence volumes (lightInFluence; with
+// photons, light bent and focused by refraction) or straight, with its transmittance (shadowing)
+// taken from the light volume (light_volume.h) or, as reference, marched toward the light from
+// every sample (like vdb_render). Rays that leave the volume see environmentRadiance
+// (environment.h); rays that reach a receiver (receivers.h) stop there and see its diffuse
+// reflection. Needs optics.h, receivers.h, environment.h and, from the includer,
+// `vec4 fetchReceiverTexel(int index)`: the irradiance (rgb) of a texel of the receiver map.
 
 // Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0.
 float stepWeight(float kappa, float s) {
     return kappa * s > 1e-5f ? (1.0f - exp(-kappa * s)) / kappa : s * (1.0f - 0.5f * kappa * s);
 }
 
-// Light scattered toward the camera (along −dir) at volume index position p from the smoothed
-// photon volumes (Sun et al. 2008 §5.4): the fluence rate φ = Σ flux·length / voxel volume, and
-// one phase function per material around the stored mean direction the light travels. Where the
-// photons' directions cancel (light crossing from opposite sides) the mean says nothing: the
-// phase function falls back to isotropic, 1/4π.
-vec3 photonInScattering(vec3 p, vec3 dir, vec3 sigma[EK_MAX_MATERIALS]) {
+// Light scattered toward the camera (along −dir) at volume index position p from the fluence
+// volumes (Sun et al. 2008 §5.4): the fluence rate φ = Σ flux·length / voxel volume, and one
+// phase function per material around the stored mean direction the light travels. Where the
+// directions cancel (light crossing from opposite sides) the mean says nothing: the phase
+// function falls back to isotropic, 1/4π.
+vec3 fluenceInScattering(vec3 p, vec3 dir, vec3 sigma[EK_MAX_MATERIALS]) {
     const vec3 h = volumeVoxelSize();
-    const vec3 fluence = vec3(sampleVolume(EK_PHOTON_RADIANCE_SLOT, p)) / (h.x * h.y * h.z);
-    const vec3 weightedDir = vec3(sampleVolume(EK_PHOTON_DIRECTION_SLOT, p));
+    const vec3 fluenceRate = vec3(sampleVolume(EK_FLUENCE_SLOT, p)) / (h.x * h.y * h.z);
+    const vec3 weightedDir = vec3(sampleVolume(EK_FLUENCE_DIRECTION_SLOT, p));
     const float len = length(weightedDir);
     const bool directed = len > 1e-20f;
     const float cosTheta = directed ? dot(weightedDir / len, -dir) : 0.0f;
     vec3 scattered = vec3(0.0f);
     for (int m = 0; m < materialCount(params); ++m)
-        scattered += sigma[m] * (directed ? phaseHG(params.materials[m].absorption.w, cosTheta)
+        scattered += sigma[m] * (directed ? phaseHG(materialPhaseG(params.materials[m]), cosTheta)
                                           : 1.0f / (4.0f * EK_PI));
-    return scattered * fluence;
+    return scattered * fluenceRate;
 }
 
 // Light l's transmittance on its way to x (volume index position p): from its light volume, or
@@ -39,13 +39,13 @@ vec3 lightShadow(int l, vec3 x, vec3 p, vec3 toLight, float lightDistance) {
     return vec3(sampleVolume(EK_MAX_MATERIALS + l, p));
 }
 
-// Irradiance on receiver r at x (on its plane) from the lights whose light comes as photons
-// (lightInFluence). Plane receivers read their map (the flux of the photons that crossed the
-// plane, per area); voxel receivers read the smoothed photon volumes 1.5 voxels in front of the
-// plane, where they are not yet cut by it: fluence rate times the net flux's cosine with the
-// normal, |Σ lum·dir| ≤ lum(Σ flux·length) making that factor a cosine in [0, 1].
-vec3 receiverPhotonIrradiance(int r, vec3 x) {
-    if (int(params.receivers[r].plane.w) == EK_RECEIVER_PLANE) {
+// Irradiance on receiver r at x (on its plane) from the lights whose light comes through the
+// fluence (lightInFluence). Plane receivers read their map (the flux that crossed the plane, per
+// area); voxel receivers read the fluence volumes 1.5 voxels in front of the plane, where they
+// are not yet cut by it: fluence rate times the net flux's cosine with the normal,
+// |Σ lum·dir| ≤ lum(Σ flux·length) making that factor a cosine in [0, 1].
+vec3 receiverFluenceIrradiance(int r, vec3 x) {
+    if (receiverKind(params.receivers[r]) == EK_RECEIVER_PLANE) {
         ivec4 index;
         vec4 weight;
         receiverBilinear(r, receiverMapCoord(r, x), index, weight);
@@ -56,8 +56,8 @@ vec3 receiverPhotonIrradiance(int r, vec3 x) {
     const vec3 normal = receiverNormal(r);
     const vec3 p = worldToVolumeIndex(x) + 1.5f * normal;
     const vec3 h = volumeVoxelSize();
-    const vec3 fluxLength = vec3(sampleVolume(EK_PHOTON_RADIANCE_SLOT, p));
-    const vec3 weightedDir = vec3(sampleVolume(EK_PHOTON_DIRECTION_SLOT, p));
+    const vec3 fluxLength = vec3(sampleVolume(EK_FLUENCE_SLOT, p));
+    const vec3 weightedDir = vec3(sampleVolume(EK_FLUENCE_DIRECTION_SLOT, p));
     const float lum = dot(fluxLength, vec3(0.2126f, 0.7152f, 0.0722f));
     if (!(lum > 0.0f)) return vec3(0.0f);
     const float cosine = clamp(-dot(weightedDir, normal) / lum, 0.0f, 1.0f);
@@ -65,15 +65,15 @@ vec3 receiverPhotonIrradiance(int r, vec3 x) {
 }
 
 // Radiance the front face of receiver r reflects toward the camera at x: albedo/π × the
-// irradiance of every light, through the photons or, for the other lights, straight with their
+// irradiance of every light, through the fluence or, for the other lights, straight with their
 // transmittance. Its back face is black.
 vec3 receiverRadiance(int r, vec3 x, bool front) {
     if (!front) return vec3(0.0f);
-    vec3 irradiance = anyLightInFluence(params) ? receiverPhotonIrradiance(r, x) : vec3(0.0f);
+    vec3 irradiance = anyLightInFluence(params) ? receiverFluenceIrradiance(r, x) : vec3(0.0f);
     const vec3 normal = receiverNormal(r);
     const vec3 p = worldToVolumeIndex(x);
     for (int l = 0; l < lightCount(params); ++l) {
-        if (lightInFluence(params, l)) continue;  // in the photon map
+        if (lightInFluence(params, l)) continue;  // in receiverFluenceIrradiance
         vec3 toLight;
         float lightDistance;
         const vec3 e = lightIrradiance(l, x, toLight, lightDistance);
@@ -96,16 +96,16 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
     vec3 sigma[EK_MAX_MATERIALS];
     bool scatters = false;
     for (int m = 0; m < materialCount(params); ++m) {
-        const float field = sampleField(params.materials[m].slot.x, p);
+        const float field = sampleField(materialSlot(params.materials[m]), p);
         sigma[m] = field * vec3(params.materials[m].scattering);
         kappa += field * vec3(params.materials[m].absorption) + sigma[m];
         source += field * vec3(params.materials[m].emission);
         scatters = scatters || sigma[m].x + sigma[m].y + sigma[m].z > 0.0f;
     }
-    if (scatters && readsFluence(params)) source += photonInScattering(p, dir, sigma);
+    if (scatters && readsFluence(params)) source += fluenceInScattering(p, dir, sigma);
     if (scatters) {
         for (int l = 0; l < lightCount(params); ++l) {
-            if (lightInFluence(params, l)) continue;  // in the photon volumes
+            if (lightInFluence(params, l)) continue;  // in the fluence volumes
             vec3 toLight;
             float lightDistance;
             const vec3 irradiance = lightIrradiance(l, x, toLight, lightDistance);
@@ -114,7 +114,7 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
             const float cosTheta = dot(-toLight, -dir);
             vec3 scattered = vec3(0.0f);
             for (int m = 0; m < materialCount(params); ++m)
-                scattered += sigma[m] * phaseHG(params.materials[m].absorption.w, cosTheta);
+                scattered += sigma[m] * phaseHG(materialPhaseG(params.materials[m]), cosTheta);
             source += scattered * irradiance * lightShadow(l, x, p, toLight, lightDistance);
         }
     }

@@ -232,8 +232,8 @@ TEST_CASE("receivers: the plane map draws a shadow edge sharper than the voxel f
 
     // Both methods through the view pass's own function, on the same photons.
     eikon::shared::ViewKernelCpu kernel{{setup.params}};
-    kernel.photonRadiance = photons.radiance.data();
-    kernel.photonDirection = photons.direction.data();
+    kernel.fluence = photons.radiance.data();
+    kernel.fluenceDirection = photons.direction.data();
     kernel.receiverMap = photons.receiverMap.data();
     const double h = 2.0 / 32.0;
     std::vector<double> xs, plane, voxels;
@@ -241,9 +241,9 @@ TEST_CASE("receivers: the plane map draws a shadow edge sharper than the voxel f
         const glm::vec3 at(float(x), kFloorY, 0.0f);
         setup.params.receivers[0].plane.w = EK_RECEIVER_PLANE;
         xs.push_back(x / h);
-        plane.push_back(kernel.receiverPhotonIrradiance(0, at).g);
+        plane.push_back(kernel.receiverFluenceIrradiance(0, at).g);
         setup.params.receivers[0].plane.w = EK_RECEIVER_VOXELS;
-        voxels.push_back(kernel.receiverPhotonIrradiance(0, at).g);
+        voxels.push_back(kernel.receiverFluenceIrradiance(0, at).g);
     }
     const double planeWidth = edgeWidth(xs, plane);
     const double voxelWidth = edgeWidth(xs, voxels);

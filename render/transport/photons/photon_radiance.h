@@ -2,7 +2,7 @@
 // The photon radiance stage (Sun et al. 2008 steps 4-6): photons traced from the lights along
 // curved paths (render/transport/photons/photon_tracing.h), their fixed-point deposits turned into
 // float volumes, both smoothed (render/smoothing.h). The viewing pass reads the result through
-// EK_PHOTON_RADIANCE_SLOT and EK_PHOTON_DIRECTION_SLOT (shaders/shared/view_march.h).
+// EK_FLUENCE_SLOT and EK_FLUENCE_DIRECTION_SLOT (shaders/shared/view_march.h).
 //
 // The light-transport method "photons" (render/transport/photons/) runs it; the frame renderer
 // reruns it only when lights, extinction, n, the volume or the photon settings change: a camera
@@ -60,9 +60,9 @@ public:
     void compute(const ViewSetup& setup, VolumeTextures& fields,
                  const RefractionVolumesGpu& refraction, const PhotonSettings& settings,
                  GpuStageTimer* timer);
-    // Binds the smoothed radiance and direction volumes to texture units EK_UNIT_PHOTON_RADIANCE
-    // and EK_UNIT_PHOTON_DIRECTION, and the receiver map to EK_SSBO_RECEIVER_MAP
-    // (shaders/shared/bindings.h).
+    // Binds the smoothed radiance and direction volumes to texture units EK_UNIT_FLUENCE and
+    // EK_UNIT_FLUENCE_DIRECTION (the output contract's fluence), and the receiver map to
+    // EK_SSBO_RECEIVER_MAP (shaders/shared/bindings.h).
     void bind() const;
     // Photon steps of the last compute (read back: 8 bytes).
     int64_t lastSteps() const;

@@ -66,7 +66,7 @@ void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
 
     if (timer) timer->begin("smooth");
     // Neither volume may stay bound for sampling while images write it.
-    for (GLuint unit : {EK_UNIT_PHOTON_RADIANCE, EK_UNIT_PHOTON_DIRECTION}) {
+    for (GLuint unit : {EK_UNIT_FLUENCE, EK_UNIT_FLUENCE_DIRECTION}) {
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_3D, 0);
     }
@@ -91,9 +91,9 @@ void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
 }
 
 void PhotonRadianceGpu::bind() const {
-    glActiveTexture(GL_TEXTURE0 + EK_UNIT_PHOTON_RADIANCE);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_FLUENCE);
     glBindTexture(GL_TEXTURE_3D, smoothed_[0]);
-    glActiveTexture(GL_TEXTURE0 + EK_UNIT_PHOTON_DIRECTION);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_FLUENCE_DIRECTION);
     glBindTexture(GL_TEXTURE_3D, smoothed_[1]);
     glActiveTexture(GL_TEXTURE0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_MAP, receiverMap_);
