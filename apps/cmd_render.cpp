@@ -100,6 +100,9 @@ int runRender(const RenderOptions& o) {
     std::error_code ec;
     fs::create_directories(scene.output.directory, ec);
     if (ec) throw Error(scene.output.directory, "cannot create the output folder: " + ec.message());
+    for (const char* ext : {"png", "exr"})
+        removeStalePartials(scene.output.directory, scene.output.name, scene.time.frameStart,
+                            scene.time.frameEnd, ext);
 
     BackendChoice choice = chooseBackend(o.backend);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());

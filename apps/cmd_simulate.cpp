@@ -3,6 +3,7 @@
 // one file per domain, <name> carrying the domain's label), a cache that
 // `eikon info` reads and a "vdb_sequence" source renders. Each file is written atomically after
 // its frame, so a blow-up keeps every frame before it and leaves no partial file.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -31,6 +32,70 @@ struct SimulateOptions {
     std::string frames;
 };
 
+// One smoke domain being simulated: its solver and where its cache goes.
+struct Domain {
+    const SmokeSimulationSpec& spec;
+    std::string directory;
+    sim::SmokeSolver solver;
+};
+
+// After a failure at frame lastComplete + 1: that frame (which some domains may have written
+// already) and the frames after it, left in the folders by an earlier run, would make a cache
+// that mixes two runs; they are removed. Returns what the message adds: which frames are valid.
+std::string keepCacheConsistent(const std::vector<Domain>& domains, int lastComplete,
+                                const TimeSettings& written) {
+    int removed = 0;
+    for (const Domain& domain : domains)
+        for (int frame = std::max(lastComplete + 1, written.frameStart); frame <= written.frameEnd;
+             ++frame) {
+            std::error_code ec;
+            if (fs::remove(framePath(domain.directory, domain.spec.cacheName, frame, "vdb"), ec))
+                ++removed;
+        }
+    const std::string cache = framePath(domains.front().directory, domains.front().spec.cacheName,
+                                        written.frameStart, "vdb");
+    std::string note = lastComplete >= written.frameStart
+                           ? "frames " + std::to_string(written.frameStart) + "-" +
+                                 std::to_string(lastComplete) + " of this run are complete (" +
+                                 cache + " on)"
+                           : "no frame of this run was written";
+    if (removed > 0)
+        note += "; removed " + std::to_string(removed) +
+                " later frame file(s) of an earlier run, which would have mixed with this run's";
+    return note;
+}
+
+// Steps `domain` through `frame` and, when `write`, writes the frame's file; prints the frame's
+// line and returns its milliseconds.
+double stepFrame(Domain& domain, int frame, bool write) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const sim::SmokeStepStats stats = domain.solver.advanceFrame();
+    std::string path;
+    if (write) {
+        path = framePath(domain.directory, domain.spec.cacheName, frame, "vdb");
+        // Unlabelled grids: the names other tools (and a "vdb_sequence" source) read.
+        FieldRegistry registry;
+        sim::publishSmoke(domain.solver.grid(), registry,
+                          "simulation frame " + std::to_string(frame));
+        exportVdb(path, registry, {field::kDensity, field::kTemperature, field::kVelocity});
+    }
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    // With conserve_mass, the advection's density deficit the correction put back (relative, the
+    // largest of the frame's substeps) and what the bounds left uncorrected.
+    char mass[96] = "";
+    if (domain.spec.conserveMass)
+        std::snprintf(mass, sizeof mass, ", mass deficit %+.2e corrected (left %+.1e)",
+                      stats.massDeficit, stats.massRemainder);
+    const std::string& label = domain.spec.label;
+    std::printf("frame %d%s%s: %d substeps, %d CG iterations, CFL %.2f%s, %.1f ms%s%s\n", frame,
+                label.empty() ? "" : " ", label.c_str(), stats.substeps, stats.cgIterations,
+                stats.cfl, mass, ms, write ? " -> " : "",
+                write ? path.c_str() : " (before --frames, not written)");
+    std::fflush(stdout);
+    return ms;
+}
+
 int runSimulate(const SimulateOptions& o) {
     const Scene scene = loadScene(o.scene);
     // The whole scene is checked before any work, the render settings the methods read too: a
@@ -55,11 +120,6 @@ int runSimulate(const SimulateOptions& o) {
     // Every domain is a solver of its own with a cache of its own (its cacheName carries its
     // label). Keyframed sources move at every substep's time on the scene's clock, the clock
     // `eikon render` evaluates its tracks on, so frame f of the cache is frame f of the render.
-    struct Domain {
-        const SmokeSimulationSpec& spec;
-        std::string directory;
-        sim::SmokeSolver solver;
-    };
     std::vector<Domain> domains;
     for (std::size_t d = 0; d < scene.simulations.size(); ++d) {
         const SmokeSimulationSpec& spec = scene.simulations[d];
@@ -67,6 +127,7 @@ int runSimulate(const SimulateOptions& o) {
         std::error_code ec;
         fs::create_directories(directory, ec);
         if (ec) throw Error(directory, "cannot create the cache folder: " + ec.message());
+        removeStalePartials(directory, spec.cacheName, written.frameStart, written.frameEnd, "vdb");
         domains.push_back({spec, directory, sim::smokeSolverFrom(scene, d)});
         const glm::ivec3 n = spec.resolution;
         std::printf("smoke%s%s %dx%dx%d, voxel %g, %g fps, frames %d-%d -> %s\n",
@@ -74,42 +135,20 @@ int runSimulate(const SimulateOptions& o) {
                     double(spec.voxelSize), scene.time.fps, written.frameStart, written.frameEnd,
                     framePath(directory, spec.cacheName, written.frameStart, "vdb").c_str());
     }
-    FieldRegistry registry;
-    const std::vector<std::string> fields = {field::kDensity, field::kTemperature,
-                                             field::kVelocity};
     double totalMs = 0.0;
-    // Frame f holds the state after f − first + 1 frames of stepping.
-    for (int frame = first; frame <= written.frameEnd; ++frame)
-        for (Domain& domain : domains) {
-            const auto t0 = std::chrono::steady_clock::now();
-            const sim::SmokeStepStats stats = domain.solver.advanceFrame();
-            const bool write = frame >= written.frameStart;
-            std::string path;
-            if (write) {
-                path = framePath(domain.directory, domain.spec.cacheName, frame, "vdb");
-                // Unlabelled grids: the names other tools (and a "vdb_sequence" source) read.
-                sim::publishSmoke(domain.solver.grid(), registry,
-                                  "simulation frame " + std::to_string(frame));
-                exportVdb(path, registry, fields);
-            }
-            const double ms =
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                    .count();
-            totalMs += ms;
-            // With conserve_mass, the advection's density deficit the correction put back
-            // (relative, the largest of the frame's substeps) and what the bounds left
-            // uncorrected.
-            char mass[96] = "";
-            if (domain.spec.conserveMass)
-                std::snprintf(mass, sizeof mass, ", mass deficit %+.2e corrected (left %+.1e)",
-                              stats.massDeficit, stats.massRemainder);
-            std::printf("frame %d%s%s: %d substeps, %d CG iterations, CFL %.2f%s, %.1f ms%s%s\n",
-                        frame, domain.spec.label.empty() ? "" : " ", domain.spec.label.c_str(),
-                        stats.substeps, stats.cgIterations, stats.cfl, mass, ms,
-                        write ? " -> " : "",
-                        write ? path.c_str() : " (before --frames, not written)");
-            std::fflush(stdout);
+    // Frame f holds the state after f − first + 1 frames of stepping. Every frame up to
+    // lastComplete is complete in every domain (written from written.frameStart on).
+    int lastComplete = first - 1;
+    try {
+        for (int frame = first; frame <= written.frameEnd; ++frame) {
+            for (Domain& domain : domains)
+                totalMs += stepFrame(domain, frame, frame >= written.frameStart);
+            lastComplete = frame;
         }
+    } catch (const Error& e) {
+        throw Error(e.where(),
+                    e.reason() + "; " + keepCacheConsistent(domains, lastComplete, written));
+    }
     const int stepped = written.frameEnd - first + 1;
     std::printf("simulated %d frames in %.1f ms (%.1f ms per frame)\n", stepped, totalMs,
                 totalMs / stepped);

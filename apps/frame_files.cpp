@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/atomic_write.h"
 #include "core/error.h"
+#include "core/log.h"
 
 namespace eikon::app {
 
@@ -28,6 +30,18 @@ std::string framePath(const std::string& directory, const std::string& name, int
     char number[16];
     std::snprintf(number, sizeof(number), "_%04d.", frame);
     return (std::filesystem::path(directory) / (name + number + ext)).string();
+}
+
+int removeStalePartials(const std::string& directory, const std::string& name, int first, int last,
+                        const char* ext) {
+    int removed = 0;
+    for (int frame = first; frame <= last; ++frame) {
+        const std::string path = framePath(directory, name, frame, ext);
+        if (!removeStalePartial(path)) continue;
+        logInfo("removed " + path + ".partial, left by an interrupted run");
+        ++removed;
+    }
+    return removed;
 }
 
 }  // namespace eikon::app

@@ -14,4 +14,9 @@ void parseFrames(const std::string& text, TimeSettings& time);
 std::string framePath(const std::string& directory, const std::string& name, int frame,
                       const char* ext);
 
+// Removes the "<file>.partial" a killed run left beside frames first..last (core/atomic_write.h
+// names them so; nothing else does), with a note for each; returns how many there were.
+int removeStalePartials(const std::string& directory, const std::string& name, int first, int last,
+                        const char* ext);
+
 }  // namespace eikon::app

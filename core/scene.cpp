@@ -195,6 +195,9 @@ void readFileSource(Object& object, const fs::path& sceneDirectory, SourceSpec& 
         file.fail("a file name with #### is a sequence pattern; use \"type\": \"vdb_sequence\"");
     }
     if (auto aliases = object.optional("aliases")) source.aliases = readAliases(*aliases);
+    if (source.type == SourceType::VdbSequence)
+        if (auto missing = object.optional("missing_frames"))
+            source.holdMissingFrames = missing->choice({"error", "hold"}) == "hold";
 }
 
 void readRamp(const Value& value, SourceSpec& source) {

@@ -48,6 +48,9 @@ struct SourceSpec {
     // Extra grid names per canonical field, tried before the built-in aliases,
     // e.g. {"density": ["soot_fine"]}.
     std::map<std::string, std::vector<std::string>> aliases;
+    // VdbSequence: a frame rendered that the sequence lacks between its first and last is an
+    // error, unless the scene says "missing_frames": "hold" (the nearest earlier frame shows).
+    bool holdMissingFrames = false;
     // Procedural shapes (Sphere, Box) write `value` (shaped by `profile`) into field `field`,
     // with a linear ramp of width `falloff` (scene units) outside the surface, on a grid of voxel
     // size `voxelSize`.

@@ -1,6 +1,7 @@
 #include "core/scene_sources.h"
 
 #include "core/error.h"
+#include "core/log.h"
 #include "core/procedural.h"
 #include "core/vdb_import.h"
 
@@ -9,10 +10,35 @@
 namespace eikon {
 
 SceneSources::SceneSources(const Scene& scene) : scene_(scene) {
-    for (size_t s = 0; s < scene.sources.size(); ++s)
-        if (scene.sources[s].type == SourceType::VdbSequence)
-            sequences_.emplace(s, findVdbSequence(scene.sources[s].file));
+    for (size_t s = 0; s < scene.sources.size(); ++s) {
+        const SourceSpec& src = scene.sources[s];
+        if (src.type != SourceType::VdbSequence) continue;
+        const VdbSequence& seq = sequences_.emplace(s, findVdbSequence(src.file)).first->second;
+        // Asked to hold: said once, here. Otherwise a missing frame is an error when rendered.
+        if (src.holdMissingFrames && !seq.missing.empty())
+            logWarning(seq.pattern() + ": frames " + seq.missingText() +
+                       " are missing; the nearest earlier frame stands in");
+    }
 }
+
+namespace {
+
+// A rendered frame the sequence lacks between its first and its last is an error, unless the
+// scene asked to hold the nearest earlier frame: a silent stand-in made a missing cache frame look
+// like smoke that stopped moving.
+void checkFramePresent(const Scene& scene, const SourceSpec& src, const VdbSequence& seq,
+                       int frame) {
+    if (src.holdMissingFrames || frame < seq.first() || frame > seq.last() ||
+        seq.frames.count(frame))
+        return;
+    throw Error(scene.path + ":" + src.jsonPath,
+                seq.pattern() + " has no frame " + std::to_string(frame) +
+                    " (missing: " + seq.missingText() +
+                    "); write it, or set \"missing_frames\": \"hold\" to "
+                    "show the nearest earlier frame instead");
+}
+
+}  // namespace
 
 void SceneSources::addProcedural(const SourceSpec& src, const std::string& origin,
                                  FieldRegistry& fields) {
@@ -40,6 +66,7 @@ void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
                 key = src.file;
                 break;
             case SourceType::VdbSequence:
+                checkFramePresent(scene_, src, sequences_.at(s), frame);
                 key = sequences_.at(s).fileForFrame(frame);
                 break;
             case SourceType::Sphere:

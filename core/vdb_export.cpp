@@ -1,11 +1,29 @@
 #include "core/vdb_export.h"
 
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
 #include "core/atomic_write.h"
 #include "core/error.h"
 #include "core/vdb_file_id.h"
 #include "core/vdb_import.h"
 
 namespace eikon {
+namespace {
+
+// io::File::write writes through a stream of its own and never looks at it afterwards, so a full
+// disk or a file-size limit left a truncated file that looked written. This writes the same
+// bytes (the seekable archive io::File writes) into a stream the caller checks.
+class CheckedVdbArchive final : public openvdb::io::Archive {
+public:
+    void writeSeekable(std::ostream& out, const openvdb::GridPtrVec& grids,
+                       const openvdb::MetaMap& meta) const {
+        Archive::write(out, grids, /*seekable=*/true, meta);
+    }
+};
+
+}  // namespace
 
 std::string exportGridName(const std::string& fieldName) {
     return fieldName == field::kColor ? "Cd" : fieldName;
@@ -31,11 +49,18 @@ void exportVdb(const std::string& path, const FieldRegistry& registry,
     }
 
     writeAtomically(path, [&](const std::string& partial) {
-        openvdb::io::File file(partial);
+        std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+        if (!out)
+            throw Error(path, std::string("cannot open for writing: ") + std::strerror(errno));
         openvdb::MetaMap meta;
         meta.insertMeta("creator", openvdb::StringMetadata("Eikon"));
-        file.write(grids, meta);
-        file.close();
+        CheckedVdbArchive().writeSeekable(out, grids, meta);
+        out.flush();
+        const int writeError = errno;
+        if (!out) throw Error(path, std::string("could not write: ") + std::strerror(writeError));
+        out.close();
+        if (out.fail())
+            throw Error(path, std::string("could not finish writing: ") + std::strerror(errno));
         makeVdbFileIdDeterministic(partial);  // the same grids, the same bytes
     });
 }

@@ -44,6 +44,10 @@ std::string describeRanges(const std::vector<int>& frames) {
 
 }  // namespace
 
+std::string VdbSequence::missingText() const {
+    return describeRanges(missing);
+}
+
 std::string VdbSequence::pattern() const {
     return (fs::path(directory) / (prefix + std::string(std::max(digits, 1), '#') + ".vdb"))
         .string();
@@ -82,9 +86,6 @@ VdbSequence findVdbSequence(const std::string& fileOrPattern) {
     if (seq.frames.empty()) throw Error(fileOrPattern, "no frames of " + seq.pattern() + " found");
     for (int f = seq.first(); f <= seq.last(); ++f)
         if (!seq.frames.count(f)) seq.missing.push_back(f);
-    if (!seq.missing.empty())
-        logWarning(seq.pattern() + ": frames " + describeRanges(seq.missing) +
-                   " are missing; the nearest earlier frame stands in");
     return seq;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-// Frame sequences of VDB files: name_####.vdb, name.####.vdb and name####.vdb. Gaps are reported
-// (a warning listing the missing frames), never fatal: a missing frame shows the nearest earlier
-// frame that exists.
+// Frame sequences of VDB files: name_####.vdb, name.####.vdb and name####.vdb, with the frames
+// missing between the first and the last listed. Whether rendering a missing frame is an error
+// (the default) or shows the nearest earlier frame is the scene's choice (core/scene_sources.cpp).
 #include <map>
 #include <string>
 #include <vector>
@@ -19,13 +19,15 @@ struct VdbSequence {
     int last() const { return frames.rbegin()->first; }
     // The pattern for messages: "dir/fluid_data_####.vdb".
     std::string pattern() const;
+    // The missing frames as ranges, "3-9, 12".
+    std::string missingText() const;
     // The file for `frame`: itself, or the nearest earlier one when it is missing, or the first
     // frame when `frame` precedes the sequence.
     const std::string& fileForFrame(int frame) const;
 };
 
 // `fileOrPattern` is one frame of the sequence ("cache/fluid_data_0001.vdb") or a pattern with
-// #### in place of the number. Throws eikon::Error when no frame is found. Warns about gaps.
+// #### in place of the number. Throws eikon::Error when no frame is found.
 VdbSequence findVdbSequence(const std::string& fileOrPattern);
 
 }  // namespace eikon

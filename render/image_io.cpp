@@ -1,5 +1,8 @@
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <string>
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -21,16 +24,39 @@ EK_NAMESPACE_END
 namespace eikon {
 namespace {
 
+// libpng's own handlers print "libpng error: ..." before ours; these keep its reason (and the
+// system's, for a failed write) for the one line the caller prints.
+struct PngFailure {
+    std::string reason;
+    int systemError = 0;
+};
+
+void onPngError(png_structp png, png_const_charp message) {
+    auto* failure = static_cast<PngFailure*>(png_get_error_ptr(png));
+    failure->reason = message ? message : "unknown";
+    failure->systemError = errno;
+    png_longjmp(png, 1);
+}
+
+void onPngWarning(png_structp, png_const_charp) {}
+
 void writePngFile(const std::string& file, const std::string& nameForErrors, int width, int height,
                   const std::vector<unsigned char>& rgb) {
     FILE* fp = std::fopen(file.c_str(), "wb");
-    if (!fp) throw Error(nameForErrors, "cannot open for writing");
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    if (!fp)
+        throw Error(nameForErrors, std::string("cannot open for writing: ") + std::strerror(errno));
+    PngFailure failure;
+    png_structp png =
+        png_create_write_struct(PNG_LIBPNG_VER_STRING, &failure, onPngError, onPngWarning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!png || !info || setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
         std::fclose(fp);
-        throw Error(nameForErrors, "libpng failed while writing");
+        std::string reason = "libpng failed while writing";
+        if (!failure.reason.empty()) reason += ": " + failure.reason;
+        if (failure.systemError != 0)
+            reason += " (" + std::string(std::strerror(failure.systemError)) + ")";
+        throw Error(nameForErrors, reason);
     }
     png_init_io(png, fp);
     png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
@@ -40,7 +66,11 @@ void writePngFile(const std::string& file, const std::string& nameForErrors, int
     for (int y = 0; y < height; ++y) png_write_row(png, rgb.data() + size_t(y) * size_t(width) * 3);
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
-    if (std::fclose(fp) != 0) throw Error(nameForErrors, "could not finish writing (disk full?)");
+    const bool flushed = std::fflush(fp) == 0 && !std::ferror(fp);
+    const int flushError = errno;
+    if (std::fclose(fp) != 0 || !flushed)
+        throw Error(nameForErrors, std::string("could not finish writing: ") +
+                                       std::strerror(flushed ? errno : flushError));
 }
 
 }  // namespace

@@ -178,19 +178,24 @@ SmokeStepStats SmokeSolver::step(float dt) {
     return stats;
 }
 
-SmokeStepStats SmokeSolver::advanceFrame() {
+int SmokeSolver::substepsForNextFrame(const char* stage) const {
     glm::ivec3 fastest(0);
     const double speed = grid_.maxSpeed(&fastest);
-    if (!std::isfinite(speed)) checkFinite("substep count");  // names the bad cell
+    if (!std::isfinite(speed)) checkFinite(stage);  // names the bad cell
     const int substeps = clock_.substepsFor(speed, grid_.domain.voxelSize);
     if (substeps > settings_.maxSubsteps)
-        throw Error(where("substep count"),
+        throw Error(where(stage),
                     "field 'velocity' reaches " + std::to_string(speed) +
                         " scene units/s near cell " + cellText(fastest) + ": CFL " +
                         std::to_string(speed / settings_.fps / grid_.domain.voxelSize) +
                         " per frame needs " + std::to_string(substeps) +
                         " substeps, more than the limit " + std::to_string(settings_.maxSubsteps) +
                         "; the simulation blew up");
+    return substeps;
+}
+
+SmokeStepStats SmokeSolver::advanceFrame() {
+    const int substeps = substepsForNextFrame("substep count");
     const float dt = float(clock_.frameDuration() / substeps);
     const int sceneFrame = settings_.firstFrame + frame_;
     SmokeStepStats total;
@@ -198,6 +203,10 @@ SmokeStepStats SmokeSolver::advanceFrame() {
         if (sourceUpdate_) sourceUpdate_(clock_.timeOfSubstep(sceneFrame, s, substeps), sources_);
         total.add(step(dt));
     }
+    // A frame whose velocity the next frame could not step is a blow-up now, before anyone
+    // publishes or writes it (a cache's last frame held velocities of 1e14 when this was
+    // checked only at the next frame's start).
+    substepsForNextFrame("end of frame");
     ++frame_;
     return total;
 }

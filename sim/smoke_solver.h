@@ -105,6 +105,9 @@ private:
     void enforceSolids();
     // Throws eikon::Error if any field holds a NaN or infinity after `stage`.
     void checkFinite(const char* stage) const;
+    // The substeps a frame needs at the current velocity; throws eikon::Error, a blow-up, when
+    // the velocity is not finite or needs more than maxSubsteps.
+    int substepsForNextFrame(const char* stage) const;
     std::string where(const char* stage) const;
 
     SmokeSettings settings_;

@@ -3,14 +3,16 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "core/field_registry.h"
 #include "core/log.h"
+#include "core/scene.h"
+#include "core/scene_sources.h"
 #include "core/vdb_sequence.h"
 #include "support/test_paths.h"
 
 using namespace eikon;
 
-TEST_CASE("the Blender sequence is found with its gap reported", "[sequence]") {
-    ScopedWarningCapture warnings;
+TEST_CASE("the Blender sequence is found with its gap listed", "[sequence]") {
     const VdbSequence seq =
         findVdbSequence(test::sharedData("vdb/blender_smoke_c42/fluid_data_0002.vdb"));
     CHECK(seq.prefix == "fluid_data_");
@@ -19,7 +21,7 @@ TEST_CASE("the Blender sequence is found with its gap reported", "[sequence]") {
     CHECK(seq.first() == 1);
     CHECK(seq.last() == 10);
     CHECK(seq.missing == std::vector<int>{3, 4, 5, 6, 7, 8, 9});
-    CHECK(warnings.contains("fluid_data_####.vdb: frames 3-9 are missing"));
+    CHECK(seq.missingText() == "3-9");
     // A missing frame shows the nearest earlier one; before the first, the first.
     CHECK(seq.fileForFrame(5).find("fluid_data_0002.vdb") != std::string::npos);
     CHECK(seq.fileForFrame(10).find("fluid_data_0010.vdb") != std::string::npos);
@@ -54,4 +56,42 @@ TEST_CASE("no frames or no number is a clear error", "[sequence][bad-input]") {
                       Catch::Contains("not a frame of a sequence"));
     CHECK_THROWS_WITH(findVdbSequence(dir + "/absent/smoke_0001.vdb"),
                       Catch::Contains("does not exist"));
+}
+
+TEST_CASE("a rendered frame missing from a sequence is an error unless the scene holds frames",
+          "[sequence][bad-input]") {
+    Scene scene;
+    scene.path = "gap.json";
+    SourceSpec source;
+    source.type = SourceType::VdbSequence;
+    source.file = test::sharedData("vdb/blender_smoke_c42/fluid_data_####.vdb");
+    source.jsonPath = "/sources/0";
+    scene.sources.push_back(source);
+    FieldRegistry fields;
+    SECTION("the default: an error naming the source, the frame and the gaps") {
+        ScopedWarningCapture warnings;
+        SceneSources sources(scene);
+        sources.loadFrame(2, fields);  // present
+        CHECK(fields.has("density"));
+        CHECK_THROWS_WITH(
+            sources.loadFrame(5, fields),
+            Catch::StartsWith("gap.json:/sources/0: ") &&
+                Catch::Contains("fluid_data_####.vdb has no frame 5 (missing: 3-9)") &&
+                Catch::Contains("\"missing_frames\": \"hold\""));
+        sources.loadFrame(10, fields);  // present again
+        sources.loadFrame(12, fields);  // after the last: the last stands in, as documented
+        CHECK_FALSE(warnings.contains("missing"));  // no warning of gaps before the error line
+    }
+    SECTION("\"hold\": the nearest earlier frame, the gaps said once") {
+        scene.sources[0].holdMissingFrames = true;
+        ScopedWarningCapture warnings;
+        SceneSources sources(scene);
+        sources.loadFrame(5, fields);
+        CHECK(fields.get("density").origin.find("fluid_data_0002.vdb") != std::string::npos);
+        int gapWarnings = 0;
+        for (const std::string& w : warnings.warnings())
+            gapWarnings += w.find("missing") != std::string::npos;
+        CHECK(gapWarnings == 1);
+        CHECK(warnings.contains("fluid_data_####.vdb: frames 3-9 are missing"));
+    }
 }

@@ -126,12 +126,14 @@ TEST_CASE("eikon simulate writes one VDB per frame, and a rerun replaces them cl
     CHECK(fileBytes(only + "/tiny_0002.vdb") == bytes2);
 }
 
-TEST_CASE("a simulation that blows up keeps the frames written and exits non-zero",
+TEST_CASE("a simulation that blows up writes no runaway frame and exits non-zero",
           "[cli][simulate]") {
     const std::string dir = scratchDir("cli_simulate_blowup");
     const std::string scene = dir + "/tiny.json";
     // The source drives the velocity to 1000 units/s in frame 1; frame 2 would need hundreds of
-    // substeps, beyond the cap of 2.
+    // substeps, beyond the cap of 2: frame 1 already holds the runaway velocity, so it is the
+    // blow-up, found before it is written (frames before a blow-up are kept: see the
+    // data-loss tests).
     std::string text = tinyScene(R"(, "velocity": [0, 1000, 0], "velocity_rate": 1e6)");
     text.replace(text.find("\"resolution\""), 0, "\"max_substeps\": 2, ");
     writeFile(scene, text);
@@ -140,10 +142,10 @@ TEST_CASE("a simulation that blows up keeps the frames written and exits non-zer
     INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
     CHECK(r.exitCode != 0);
     CHECK(r.err.rfind("eikon: smoke step", 0) == 0);
+    CHECK(r.err.find("end of frame") != std::string::npos);
     CHECK(r.err.find("blew up") != std::string::npos);
-    checkFrameImports(out + "/tiny_0001.vdb");
-    CHECK_FALSE(fs::exists(out + "/tiny_0002.vdb"));
-    CHECK(fileCount(out) == 1);
+    CHECK(r.err.find("no frame of this run was written") != std::string::npos);
+    CHECK(fileCount(out) == 0);
 }
 
 TEST_CASE("a keyframed source: a frame cut out with --frames equals the same frame of a full run",

@@ -1,0 +1,151 @@
+// Data loss in `eikon simulate`, as users met it: a full disk while re-simulating over a good cache
+// renamed a truncated frame over a good one and exited 0. The disk is made full by a file-size
+// limit (bash's `ulimit -f`, with SIGXFSZ ignored, so a write past it fails with EFBIG the way a
+// full disk fails with ENOSPC): it needs no root and no tmpfs, so CI runs it. Afterwards every
+// file at a frame's name is a complete frame, the run's frames before the failure are its own,
+// no frame of the older run is left after them to mix with it, and the exit status and the one
+// error line tell what happened.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/field_registry.h"
+#include "core/vdb_import.h"
+#include "support/run_eikon.h"
+#include "support/test_paths.h"
+
+using eikon::test::quoted;
+using eikon::test::readFile;
+using eikon::test::runEikon;
+using eikon::test::RunResult;
+using eikon::test::scratchDir;
+using eikon::test::writeFile;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A 16³ plume over six frames; `rate` sets how much smoke the source adds, so that two runs
+// differ in every frame.
+std::string plume(const std::string& rate) {
+    return R"({
+  "sources": [{"type": "vdb_sequence", "file": "cache/puff_####.vdb"}],
+  "materials": [{"name": "smoke", "scattering": [1, 1, 1]}],
+  "output": {"name": "puff"},
+  "time": {"fps": 24, "frame_start": 1, "frame_end": 6},
+  "simulation": {
+    "domain": {"min": [0, 0, 0], "max": [1, 1, 1]},
+    "resolution": 16,
+    "walls": {"+y": "open"},
+    "sources": [{"type": "sphere", "center": [0.5, 0.25, 0.5], "radius": 0.15,
+                 "density_rate": )" +
+           rate + R"(, "temperature_rate": 30}]
+  }
+})";
+}
+
+std::string frameFile(const std::string& dir, int frame) {
+    return dir + "/puff_000" + std::to_string(frame) + ".vdb";
+}
+
+std::vector<std::string> filesIn(const std::string& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
+    return names;
+}
+
+// Runs eikon in `dir` with files limited to `kib` KiB, as a disk that fills there would.
+RunResult runWithFileLimit(const std::string& args, const std::string& dir, std::uintmax_t kib) {
+    const std::string launcher = "bash -c " + quoted("trap '' XFSZ; ulimit -f " +
+                                                     std::to_string(kib) + "; exec \"$0\" \"$@\"");
+    return runEikon(args, dir, launcher);
+}
+
+}  // namespace
+
+TEST_CASE("a full disk while re-simulating leaves complete frames and says which",
+          "[cli][simulate][data-loss]") {
+    const std::string dir = scratchDir("cli_simulate_disk_full");
+    const std::string oldScene = dir + "/old.json", newScene = dir + "/new.json";
+    writeFile(oldScene, plume("2"));
+    writeFile(newScene, plume("4"));
+    const std::string cache = dir + "/cache", reference = dir + "/reference";
+    fs::remove_all(cache);
+    fs::remove_all(reference);
+
+    // The good cache the user has, and what the new run writes when the disk has room.
+    REQUIRE(runEikon("simulate " + quoted(oldScene) + " -o " + quoted(cache), dir).exitCode == 0);
+    REQUIRE(runEikon("simulate " + quoted(newScene) + " -o " + quoted(reference), dir).exitCode ==
+            0);
+    std::vector<std::uintmax_t> sizes;
+    for (int f = 1; f <= 6; ++f) sizes.push_back(fs::file_size(frameFile(reference, f)));
+    INFO("the new run's frame sizes grow as the smoke spreads: " << sizes[2] << " then "
+                                                                 << sizes[3]);
+    // A limit between frames 3 and 4 of the new run: its frame 4 is the first that cannot be
+    // written whole.
+    const std::uintmax_t limitKib = (sizes[2] + sizes[3]) / 2 / 1024;
+    REQUIRE(limitKib * 1024 > sizes[2]);
+    REQUIRE(limitKib * 1024 < sizes[3]);
+
+    const RunResult r =
+        runWithFileLimit("simulate " + quoted(newScene) + " -o " + quoted(cache), dir, limitKib);
+    INFO("exit " << r.exitCode << "\nstdout:\n" << r.out << "stderr:\n" << r.err);
+    CHECK(r.exitCode != 0);
+    const std::vector<std::string> errorLines = eikon::test::lines(r.err);
+    REQUIRE(errorLines.size() == 1);
+    CHECK(errorLines[0].rfind("eikon: " + frameFile(cache, 4) + ": ", 0) == 0);
+    CHECK(errorLines[0].find("File too large") != std::string::npos);
+    CHECK(errorLines[0].find("frames 1-3 of this run are complete") != std::string::npos);
+    CHECK(errorLines[0].find("removed 3 later frame file(s) of an earlier run") !=
+          std::string::npos);
+
+    // Frames 1-3 are the new run's, byte for byte; 4-6 of the old run are gone, not mixed in;
+    // nothing partial is left.
+    for (int f = 1; f <= 3; ++f)
+        CHECK(readFile(frameFile(cache, f)) == readFile(frameFile(reference, f)));
+    CHECK(filesIn(cache).size() == 3);
+    for (int f = 1; f <= 3; ++f) {
+        eikon::FieldRegistry fields;
+        eikon::importVdb(frameFile(cache, f), fields);  // complete: it reads
+        CHECK(fields.has("density"));
+    }
+}
+
+TEST_CASE("a frame that cannot be written at all fails before anything is replaced",
+          "[cli][simulate][data-loss]") {
+    const std::string dir = scratchDir("cli_simulate_no_room");
+    const std::string scene = dir + "/puff.json";
+    writeFile(scene, plume("2"));
+    const std::string cache = dir + "/cache";
+    fs::remove_all(cache);
+    REQUIRE(runEikon("simulate " + quoted(scene) + " -o " + quoted(cache), dir).exitCode == 0);
+    const std::string frame1 = readFile(frameFile(cache, 1));
+    // Room for no frame: the first write fails, and the old run's frames are removed rather than
+    // left to look like this run's.
+    const RunResult r =
+        runWithFileLimit("simulate " + quoted(scene) + " -o " + quoted(cache), dir, 1);
+    INFO("exit " << r.exitCode << "\nstderr:\n" << r.err);
+    CHECK(r.exitCode != 0);
+    CHECK(r.err.find("no frame of this run was written") != std::string::npos);
+    CHECK(filesIn(cache).empty());
+}
+
+TEST_CASE("a stale partial frame left by a killed run is removed on the next run",
+          "[cli][simulate][data-loss]") {
+    const std::string dir = scratchDir("cli_simulate_stale_partial");
+    const std::string scene = dir + "/puff.json";
+    writeFile(scene, plume("2"));
+    const std::string cache = dir + "/cache";
+    fs::remove_all(cache);
+    fs::create_directories(cache);
+    writeFile(frameFile(cache, 2) + ".partial", "half a frame");
+    writeFile(cache + "/notes.partial", "not ours: kept");
+    const RunResult r = runEikon("simulate " + quoted(scene) + " -o " + quoted(cache), dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK_FALSE(fs::exists(frameFile(cache, 2) + ".partial"));
+    CHECK(fs::exists(cache + "/notes.partial"));
+    CHECK(r.err.find("puff_0002.vdb.partial, left by an interrupted run") != std::string::npos);
+}
