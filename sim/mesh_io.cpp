@@ -120,11 +120,12 @@ LoadedMesh loadMesh(const std::string& path) {
         } else {
             ok = OpenMesh::IO::IOManager().read(path, read, options);
         }
-        loaded.notes = messages.lines();
+        // OpenMesh's notes quote the file (a material library's name): escaped once, here.
+        for (const std::string& note : messages.lines())
+            loaded.notes.push_back(printable(note, 200));
         if (!ok) {
             std::string reason = "not a readable " + formatName(ext) + " file";
-            if (!loaded.notes.empty())
-                reason += " (OpenMesh: " + printable(loaded.notes.back()) + ")";
+            if (!loaded.notes.empty()) reason += " (OpenMesh: " + loaded.notes.back() + ")";
             throw Error(path, reason);
         }
     }

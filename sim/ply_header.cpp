@@ -74,7 +74,7 @@ public:
             throw Error(path_, "not a PLY file (it does not start with 'ply')");
         if (!endsHeader()) neverEnds();
         std::string line;
-        if (!nextLine(line) || line != "ply")
+        if (!nextLine(line) || words(line) != std::vector<std::string>{"ply"})
             fail("expected the first line to be 'ply', got " + quoted(line));
         if (!nextLine(line)) neverEnds();
         readFormat(line);

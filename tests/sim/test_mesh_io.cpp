@@ -207,3 +207,14 @@ TEST_CASE("NaN and infinite mesh vertices are errors naming the file and the ver
               "vertex 0 1 0\nendloop\nendfacet\nendsolid t\n");
     CHECK(contains(loadError(dir + "/nan_ascii.stl"), "vertex 2 ('vertex nan 0 0')"));
 }
+
+TEST_CASE("OpenMesh's notes that quote the file are escaped", "[mesh_io]") {
+    // A material library name with an escape sequence would otherwise reach the terminal raw in
+    // `eikon info`'s reader notes.
+    const std::string dir = scratchDir("mesh_io_notes");
+    writeText(dir + "/esc.obj", "mtllib \x1b[31mred.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const LoadedMesh loaded = loadMesh(dir + "/esc.obj");
+    REQUIRE(loaded.notes.size() == 1);
+    CHECK(contains(loaded.notes[0], "\\x1b[31mred.mtl"));
+    CHECK(loaded.notes[0].find('\x1b') == std::string::npos);
+}

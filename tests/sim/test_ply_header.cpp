@@ -66,6 +66,9 @@ TEST_CASE("a well-formed PLY header still reads, with comments, CRLF and synonym
         crlf.replace(at, 1, "\r\n");
     writeText(dir + "/crlf.ply", crlf);
     CHECK(loadMesh(dir + "/crlf.ply").faces == 1);
+    // Trailing blanks on the first line, as some writers leave them.
+    writeText(dir + "/blank.ply", "ply \n" + asciiTriangle(kGoodLines).substr(4));
+    CHECK(loadMesh(dir + "/blank.ply").faces == 1);
     writeText(dir + "/cube.ply", plyBinaryBytes(unitCubeQuads()));
     CHECK(loadMesh(dir + "/cube.ply").faces == 6);
 }
