@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/printable.h"
 
 namespace eikon::json {
 
@@ -24,9 +25,14 @@ std::string formatNumber(double x) {
     return out.str();
 }
 
+// Keys come from the user's file: control characters in them are escaped (core/printable.h).
 std::string quote(const std::string& text) {
-    return "'" + text + "'";
+    return "'" + printable(text) + "'";
 }
+
+// Deeper than any scene needs, shallow enough that nothing (the parser's stacks, a recursive
+// destructor, our pointers) grows with a hostile file: 100,000 levels ended in bad_alloc.
+constexpr std::size_t kMaxNestingDepth = 256;
 
 std::string joinQuoted(const std::vector<std::string>& items, const std::string& quoteMark) {
     std::string joined;
@@ -120,6 +126,15 @@ public:
         return true;
     }
 
+    // The pointer of the value being parsed now: after a key, that key's; in an array, the next
+    // element's. Where a number that overflows is, for its message.
+    std::string currentPointer() const {
+        if (frames_.empty()) return "";
+        const Frame& frame = frames_.back();
+        return appendPointer(frame.pointer,
+                             frame.isArray ? std::to_string(frame.count) : frame.lastKey);
+    }
+
 private:
     struct Frame {
         bool isArray = false;
@@ -130,6 +145,10 @@ private:
     };
 
     void open(bool isArray) {
+        if (frames_.size() >= kMaxNestingDepth)
+            throw Error(file_, "nested deeper than " + std::to_string(kMaxNestingDepth) +
+                                   " arrays and objects (at " + printable(currentPointer(), 60) +
+                                   ")");
         Frame frame;
         frame.isArray = isArray;
         if (!frames_.empty()) {
@@ -167,7 +186,22 @@ Json parseDocument(const std::string& text, const std::string& file) {
     } catch (const Json::parse_error& e) {
         const TextPosition at = positionOfByte(text, e.byte);
         throw Error(file, "invalid JSON at line " + std::to_string(at.line) + ", column " +
-                              std::to_string(at.column) + ": " + syntaxErrorDetail(e.what()));
+                              std::to_string(at.column) + ": " +
+                              printable(syntaxErrorDetail(e.what()), 200));
+    } catch (const Json::out_of_range& e) {
+        // 406: a number beyond a double ("1e400"); nlohmann gives no position, the checker knows
+        // the pointer of the value it was reading.
+        const std::string what = e.what();
+        const std::size_t parsing = what.find("parsing '");
+        const std::string number = parsing == std::string::npos
+                                       ? ""
+                                       : what.substr(parsing + 9, what.size() - parsing - 10);
+        throw Error(file + ":" + checker.currentPointer(),
+                    "the number " + printable(number) +
+                        " is out of range (a double reaches about 1.8e308)");
+    } catch (const Json::exception& e) {
+        throw Error(file + ":" + checker.currentPointer(),
+                    "invalid JSON: " + printable(syntaxErrorDetail(e.what()), 200));
     }
 }
 
@@ -342,8 +376,13 @@ bool Value::boolean() const {
     return json_->get<bool>();
 }
 
+// Scene strings are names, paths and choices: a control character in one is a mistake, and a
+// NUL would cut a path short (output.name "a\u0000b" once made the cleanup rmdir the output
+// folder).
 std::string Value::string() const {
     if (!json_->is_string()) failExpected("a string");
+    if (hasControlCharacter(json_->get_ref<const std::string&>()))
+        failExpected("a string without control characters");
     return json_->get<std::string>();
 }
 
@@ -351,7 +390,7 @@ std::string Value::nonEmptyString() const {
     if (!json_->is_string() || json_->get_ref<const std::string&>().empty()) {
         failExpected("a non-empty string");
     }
-    return json_->get<std::string>();
+    return string();
 }
 
 std::string Value::choice(const std::vector<std::string>& allowed) const {

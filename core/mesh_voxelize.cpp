@@ -1,6 +1,8 @@
 #include "core/mesh_voxelize.h"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -43,6 +45,26 @@ void checkMeshForVoxelization(const TriangleMesh& mesh, const std::string& what)
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                 throw Error(what, "vertex " + std::to_string(index) + " is not finite");
         }
+}
+
+void checkMeshFitsVoxelGrid(const TriangleMesh& mesh, const std::string& what, glm::vec3 gridMin,
+                            glm::vec3 cellSize, glm::ivec3 resolution) {
+    for (size_t v = 0; v < mesh.positions.size(); ++v) {
+        const glm::vec3 p = mesh.positions[v];
+        for (int axis = 0; axis < 3; ++axis) {
+            // Cells from the grid's nearer face, in double so that nothing overflows.
+            const double cell = (double(p[axis]) - double(gridMin[axis])) / double(cellSize[axis]);
+            const double outside = std::max(-cell, cell - double(resolution[axis]));
+            if (std::isfinite(cell) && outside <= kMaxVoxelsFromGrid) continue;
+            std::ostringstream reason;
+            reason << "vertex " << v << " at (" << p.x << ", " << p.y << ", " << p.z << ") lies "
+                   << outside << " voxels (of " << cellSize[axis] << " along " << char('x' + axis)
+                   << ") outside the grid; the voxelizer resolves at most " << kMaxVoxelsFromGrid
+                   << ": the mesh's scale or placement, or the volume's "
+                   << "size, is far off";
+            throw Error(what, reason.str());
+        }
+    }
 }
 
 InsideBits voxelizeInsideCpu(const TriangleMesh& mesh, glm::vec3 gridMin, glm::vec3 cellSize,

@@ -34,6 +34,16 @@ struct InsideBits {
 // is not finite or an index is out of range.
 void checkMeshForVoxelization(const TriangleMesh& mesh, const std::string& what);
 
+// Throws eikon::Error naming `what` when a vertex lies more than kMaxVoxelsFromGrid cells (of
+// `cellSize`) outside the grid with corner `gridMin` and `resolution` cells, measured in double:
+// the voxelizer works in float cell coordinates, which cannot tell columns apart that far out
+// (and overflow beyond float range). A mesh of radius 1e30 around a volume 1e-30 wide wrote
+// outside the bit array before the kernel learnt to skip such triangles; this check turns the
+// absurd scale into a message instead of an empty or garbled coverage.
+constexpr double kMaxVoxelsFromGrid = 16777216.0;  // 2^24: float's last exact integer
+void checkMeshFitsVoxelGrid(const TriangleMesh& mesh, const std::string& what, glm::vec3 gridMin,
+                            glm::vec3 cellSize, glm::ivec3 resolution);
+
 // Inside bits at the centres of the cells of the grid with corner `gridMin`, cells of
 // `cellSize` and `resolution` cells: triangles in parallel with atomic XOR (order-independent,
 // so the bits do not depend on the thread count), then a prefix XOR up each column.

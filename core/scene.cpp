@@ -23,6 +23,7 @@
 #include "core/scene_meshes.h"
 #include "core/scene_receivers.h"
 #include "core/scene_simulation.h"
+#include "core/scene_voxel_size.h"
 #include "shaders/shared/gpu_types.h"
 
 namespace eikon {
@@ -33,6 +34,7 @@ namespace fs = std::filesystem;
 using json::Object;
 using json::Range;
 using json::Value;
+using scene_detail::checkVoxelSize;
 using scene_detail::formatVec3;
 using scene_detail::resolveAgainst;
 
@@ -155,6 +157,15 @@ VolumeSettings readVolume(const Value& value) {
             static_cast<int>(maxResolution->integer(kMinMaxResolution, kMaxVolumeResolution));
     }
     object.finish();
+    if (!volume.autoBounds) {
+        // An automatic resolution puts at most max_resolution voxels along the longest axis.
+        const glm::vec3 extent = volume.bounds.size();
+        const glm::vec3 voxel =
+            volume.autoResolution
+                ? glm::vec3(std::max({extent.x, extent.y, extent.z}) / float(volume.maxResolution))
+                : extent / glm::vec3(volume.resolution);
+        checkVoxelSize(object.value().child("bounds"), voxel, volume.bounds, "the volume's voxels");
+    }
     return volume;
 }
 
@@ -221,6 +232,7 @@ void readProceduralCommon(Object& object, SourceSpec& source) {
     }
     if (auto voxelSize = object.optional("voxel_size")) {
         source.voxelSize = voxelSize->floatNumber(Range::greaterThan(0.0));
+        checkVoxelSize(*voxelSize, glm::vec3(source.voxelSize), Bounds3{}, "the voxels");
     }
     if (auto ramp = object.optional("ramp")) {
         object.forbid("value", "a ramp sets the values ('from' and 'to'); remove 'value'");

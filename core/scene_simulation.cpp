@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/scene_helpers.h"
+#include "core/scene_voxel_size.h"
 
 namespace eikon {
 namespace {
@@ -233,6 +234,8 @@ SmokeSimulationSpec readSimulation(const Value& value, const std::filesystem::pa
                                             "[x, y, z]}"));
     // The resolution depends on the domain, so it is read after it.
     readResolution(object.required("resolution", "an integer or [nx, ny, nz]"), sim);
+    scene_detail::checkVoxelSize(object.value().child("domain"), glm::vec3(sim.voxelSize),
+                                 sim.domain, "the domain's cells");
     if (auto walls = object.optional("walls")) sim.walls = readWalls(*walls);
     if (auto cfl = object.optional("cfl")) sim.cfl = cfl->number(Range::greaterThan(0.0));
     if (auto substeps = object.optional("max_substeps")) {

@@ -102,6 +102,10 @@ void MeshFields::update(const Scene& scene, const RenderVolume& volume, MeshVoxe
         appendBytes(key, &volume.bounds, sizeof(volume.bounds));
         appendBytes(key, &volume.resolution, sizeof(volume.resolution));
         if (key != m.coverageKey) {
+            const MeshObjectSpec& spec = scene.meshes[i];
+            checkMeshFitsVoxelGrid(world,
+                                   scene.path + ":" + spec.jsonPath + " (mesh '" + spec.name + "')",
+                                   volume.bounds.min, volume.voxelSize(), volume.resolution);
             m.coverage =
                 gpu ? gpu->voxelizeToHost(world, volume) : voxelizeCoverageCpu(world, volume);
             m.coverageKey = key;

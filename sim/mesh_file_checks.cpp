@@ -6,8 +6,11 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 
 #include "core/error.h"
+#include "core/printable.h"
+#include "sim/ply_body.h"
 
 namespace eikon {
 
@@ -32,13 +35,77 @@ bool finiteFloats(const char* text, int count) {
 
 }  // namespace
 
-void checkPlyHeader(const std::string& path, const std::string& bytes) {
-    if (bytes.compare(0, 3, "ply") != 0)
-        throw Error(path, "not a PLY file (it does not start with 'ply')");
-    // A header is a few hundred bytes; the search stops at the first megabyte of data.
-    const std::size_t end = bytes.find("end_header", 0);
-    if (end == std::string::npos || end > (std::size_t(1) << 20))
-        throw Error(path, "the PLY header never ends (no 'end_header'): truncated or corrupt");
+namespace {
+
+bool isOneOf(const std::string& name, std::initializer_list<const char*> names) {
+    for (const char* n : names)
+        if (name == n) return true;
+    return false;
+}
+
+// What OpenMesh 9.0's PLY reader (PLYReader.cc) can read of a header the grammar accepts. Anything
+// else it misreads silently, and a misread list count is up to 2^32 indices.
+void checkPlyForOpenMesh(const std::string& path, const PlyHeader& header) {
+    const bool binary = header.format != PlyFormat::Ascii;
+    bool readOn = true;  // OpenMesh stops after the face element: later ones are never read
+    for (const PlyElement& e : header.elements) {
+        const std::string where = path + ":" + std::to_string(e.line);
+        const std::string element = "element '" + printable(e.name) + "'";
+        if (e.name == "vertex") {
+            for (const char* axis : {"x", "y", "z"}) {
+                bool found = false;
+                for (const PlyProperty& p : e.properties) found = found || p.name == axis;
+                if (!found) throw Error(where, element + " has no '" + axis + "' property");
+            }
+        }
+        for (const PlyProperty& p : e.properties) {
+            const std::string at = path + ":" + std::to_string(p.line);
+            const std::string property = "property '" + printable(p.name) + "' of " + element;
+            const bool indices =
+                e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+            if (indices && !p.isList) throw Error(at, property + " is not a list");
+            if (p.isList && readOn) {
+                // OpenMesh skips a list it does not know as one value, misaligning what follows.
+                if (!indices)
+                    throw Error(at, property +
+                                        " is a list, which OpenMesh's PLY reader cannot skip "
+                                        "(only the face element's vertex_indices may be one)");
+                if (!isOneOf(p.countTypeName, {"uchar", "uint8", "uint16", "int"}))
+                    throw Error(at, property + " has count type '" + p.countTypeName +
+                                        "'; OpenMesh's PLY reader takes uchar, uint8, uint16 "
+                                        "or int");
+                if (!plyTypeIsIntegral(p.type))
+                    throw Error(at, property + " has items of type '" + p.typeName +
+                                        "'; vertex indices are integers");
+            }
+            // In binary, OpenMesh reads these as floats and colours as integers or floats; a
+            // type it cannot convert is not consumed at all, misaligning what follows.
+            if (binary && readOn && e.name == "vertex" &&
+                isOneOf(p.name, {"x", "y", "z", "nx", "ny", "nz", "u", "v", "s", "t"}) &&
+                plyTypeIsIntegral(p.type))
+                throw Error(at, property + " has type '" + p.typeName +
+                                    "'; OpenMesh reads it from a binary file only as float or "
+                                    "double");
+            const bool colour = isOneOf(p.name, {"red", "green", "blue", "alpha"}) ||
+                                (e.name == "vertex" &&
+                                 isOneOf(p.name, {"diffuse_red", "diffuse_green", "diffuse_blue"}));
+            if (binary && readOn && colour && (e.name == "vertex" || e.name == "face") &&
+                p.type == PlyType::Float64)
+                throw Error(at, property +
+                                    " has type 'double'; OpenMesh reads a colour from a binary "
+                                    "file only as an integer or a float");
+        }
+        if (e.name == "face") readOn = false;
+    }
+}
+
+}  // namespace
+
+PlyHeader checkPlyFile(const std::string& path, const std::string& bytes) {
+    const PlyHeader header = parsePlyHeader(path, bytes);
+    checkPlyForOpenMesh(path, header);
+    checkPlyBody(path, bytes, header);
+    return header;
 }
 
 namespace {
@@ -96,7 +163,7 @@ std::size_t checkVertexLines(const std::string& path, const std::string& bytes,
             const std::string line = withoutLineEnd(bytes.substr(first, end - first));
             if (!finiteFloats(line.c_str() + keyword.size(), 3))
                 throw Error(path + ":" + std::to_string(lineNumber),
-                            "vertex " + std::to_string(vertexLines) + " ('" + line +
+                            "vertex " + std::to_string(vertexLines) + " ('" + printable(line) +
                                 "') is not three finite numbers");
         }
         start = end + 1;
@@ -110,6 +177,77 @@ void checkObjVertices(const std::string& path, const std::string& bytes, std::si
         throw Error(path, "the file has " + std::to_string(vertexLines) +
                               " vertex lines but OpenMesh read " + std::to_string(verticesRead) +
                               " vertices: corrupt file");
+}
+
+namespace {
+
+// The whitespace-separated words of an OFF file, '#' comments skipped, up to `limit` of them.
+std::vector<std::string> offWords(const std::string& bytes, std::size_t limit, std::size_t& after) {
+    std::vector<std::string> words;
+    std::size_t i = 0;
+    while (i < bytes.size() && words.size() < limit) {
+        if (bytes[i] == '#') {
+            i = bytes.find('\n', i);
+            if (i == std::string::npos) i = bytes.size();
+            continue;
+        }
+        if (std::isspace((unsigned char)bytes[i])) {
+            ++i;
+            continue;
+        }
+        const std::size_t start = i;
+        while (i < bytes.size() && !std::isspace((unsigned char)bytes[i]) && bytes[i] != '#') ++i;
+        words.push_back(bytes.substr(start, i - start));
+    }
+    after = i;
+    return words;
+}
+
+bool wholeNumber(const std::string& word, std::uint64_t& value) {
+    if (word.empty() || word.size() > 10 ||
+        word.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+    value = std::stoull(word);
+    return value <= 0xffffffffull;
+}
+
+}  // namespace
+
+void checkOffCounts(const std::string& path, const std::string& bytes) {
+    std::size_t after = 0;
+    std::vector<std::string> w = offWords(bytes, 5, after);
+    if (w.empty()) return;
+    const std::string& keyword = w[0];
+    // [ST][C][N][4][n]OFF: `n` puts the dimension before the counts, `4` adds a coordinate.
+    if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return;
+    const std::string prefix = keyword.substr(0, keyword.size() - 3);
+    std::size_t next = 1;
+    if (w.size() > next && w[next] == "BINARY") return;
+    std::uint64_t dimension = 3;
+    if (prefix.find('n') != std::string::npos) {
+        if (w.size() <= next || !wholeNumber(w[next], dimension)) return;  // OpenMesh says why
+        ++next;
+    }
+    if (prefix.find('4') != std::string::npos) ++dimension;
+    std::uint64_t vertices = 0, faces = 0;
+    if (w.size() < next + 3 || !wholeNumber(w[next], vertices) ||
+        !wholeNumber(w[next + 1], faces)) {
+        std::string got;
+        for (std::size_t k = next; k < w.size() && k < next + 3; ++k)
+            got += (got.empty() ? "" : " ") + w[k];
+        throw Error(path, "expected the vertex, face and edge counts after '" + printable(keyword) +
+                              "', got '" + printable(got) + "'");
+    }
+    // Recount from the end of the counts: offWords stopped after up to five words.
+    std::size_t end = 0;
+    offWords(bytes, next + 3, end);
+    const std::uint64_t available = bytes.size() - end;
+    const std::uint64_t needed = vertices * dimension * 2 + faces * 2;
+    if (needed > available + 1)
+        throw Error(path, "the OFF header declares " + std::to_string(vertices) + " vertices and " +
+                              std::to_string(faces) + " faces, which need at least " +
+                              std::to_string(needed) + " bytes, but " + std::to_string(available) +
+                              " follow the counts: truncated or corrupt");
 }
 
 void checkOffLength(const std::string& path, const std::string& bytes, std::size_t verticesRead,

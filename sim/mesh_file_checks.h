@@ -3,7 +3,9 @@
 // eikon::Error naming the file (and line, where there is one) and saying what is wrong.
 //
 // Measured on OpenMesh 9.0 (Debian 12):
-// - a PLY whose header never reaches `end_header` sends the PLY reader into an endless loop;
+// - a PLY whose header never reaches `end_header`, or one it cannot parse, sends the PLY reader
+//   into an endless loop (sim/ply_header.h has the list); a count in a PLY header or body sizes its
+//   buffers unchecked (sim/ply_body.h);
 // - a binary STL cut short reads as a mesh with fewer (or no) triangles and no error;
 // - a NaN corner in a binary STL goes into the ordered map that welds corners, whose ordering it
 //   breaks;
@@ -16,10 +18,16 @@
 #include <string>
 #include <vector>
 
+#include "sim/ply_header.h"
+
 namespace eikon {
 
-// Before reading: the file starts with `ply` and its header ends (`end_header`).
-void checkPlyHeader(const std::string& path, const std::string& bytes);
+// Before reading a PLY: its header follows the grammar (sim/ply_header.h), asks for nothing that
+// OpenMesh's reader would misread (a list other than the faces' vertex_indices, list counts of a
+// type it does not take, integer coordinates or double colours in a binary file; a vertex element
+// without x, y and z), and its body holds what the counts say (sim/ply_body.h). Returns the header,
+// whose canonical form is what OpenMesh is given.
+PlyHeader checkPlyFile(const std::string& path, const std::string& bytes);
 
 // Whether an STL file is ASCII: it starts with `solid` and is not exactly the size of a binary STL
 // (some exporters start the 80-byte header of a binary STL with `solid` too).
@@ -37,6 +45,13 @@ std::size_t checkVertexLines(const std::string& path, const std::string& bytes,
 
 // After reading an OBJ: its `v` lines are sound and OpenMesh read as many vertices.
 void checkObjVertices(const std::string& path, const std::string& bytes, std::size_t verticesRead);
+
+// Before reading an ASCII OFF: the counts on its header line are whole numbers that the rest of
+// the file can back (every vertex at least one byte and a separator per coordinate, every face
+// at least its count). OpenMesh sizes its buffers from them and loops over them without checking
+// the end of the file: "OFF\n4000000000 4000000000 0" ran past `timeout 20`. Binary OFF is left to
+// OpenMesh.
+void checkOffCounts(const std::string& path, const std::string& bytes);
 
 // After reading an ASCII OFF: the file holds at least the numbers that the vertices and faces
 // OpenMesh returned need (three per vertex, one count plus the indices per face).

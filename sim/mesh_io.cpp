@@ -11,8 +11,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 
 #include "core/error.h"
+#include "core/printable.h"
 #include "sim/mesh_file_checks.h"
 #include "sim/openmesh_face_recorder.h"
 #include "sim/openmesh_messages.h"
@@ -94,7 +96,9 @@ LoadedMesh loadMesh(const std::string& path) {
                               "' (eikon reads .obj, .off, .ply and .stl meshes)");
     const std::string bytes = readBytes(path);
     if (bytes.empty()) throw Error(path, "empty file");
-    if (ext == ".ply") checkPlyHeader(path, bytes);
+    PlyHeader ply;
+    if (ext == ".ply") ply = checkPlyFile(path, bytes);
+    if (ext == ".off") checkOffCounts(path, bytes);
     if (ext == ".stl") {
         if (isAsciiStl(bytes))
             checkVertexLines(path, bytes, "vertex");
@@ -107,8 +111,18 @@ LoadedMesh loadMesh(const std::string& path) {
     {
         OpenMeshMessages messages;
         OpenMesh::IO::Options options;  // positions and faces only
-        const bool ok = OpenMesh::IO::IOManager().read(path, read, options);
-        loaded.notes = messages.lines();
+        bool ok = false;
+        if (ext == ".ply") {
+            // OpenMesh parses only the header our grammar wrote, never the file's own.
+            std::istringstream in(canonicalPlyHeader(ply) + bytes.substr(ply.bodyOffset),
+                                  std::ios::binary);
+            ok = OpenMesh::IO::IOManager().read(in, "ply", read, options);
+        } else {
+            ok = OpenMesh::IO::IOManager().read(path, read, options);
+        }
+        // OpenMesh's notes quote the file (a material library's name): escaped once, here.
+        for (const std::string& note : messages.lines())
+            loaded.notes.push_back(printable(note, 200));
         if (!ok) {
             std::string reason = "not a readable " + formatName(ext) + " file";
             if (!loaded.notes.empty()) reason += " (OpenMesh: " + loaded.notes.back() + ")";

@@ -99,8 +99,9 @@ TriangleMesh worldMesh(const MeshObjectSpec& spec) {
 }
 
 // `meshes`: the scene's, for mesh obstacles; null when only the simulation spec is at hand.
+// `scenePath` names the scene file in messages.
 void addObstacles(SmokeSolver& solver, const SmokeSimulationSpec& spec,
-                  const std::vector<MeshObjectSpec>* meshes) {
+                  const std::vector<MeshObjectSpec>* meshes, const std::string& scenePath = "") {
     const Domain& d = solver.settings().domain;
     for (const SimShapeSpec& obstacle : spec.obstacles) {
         if (obstacle.kind != SimShapeSpec::Kind::Mesh) {
@@ -112,7 +113,11 @@ void addObstacles(SmokeSolver& solver, const SmokeSimulationSpec& spec,
                         "a mesh obstacle needs the scene's meshes: build the "
                         "solver from the scene (smokeSolverFrom(scene))");
         // Solid cells: those whose centres the closed mesh holds (parity at the cell centres).
-        const TriangleMesh world = worldMesh((*meshes)[std::size_t(obstacle.mesh)]);
+        const MeshObjectSpec& mesh = (*meshes)[std::size_t(obstacle.mesh)];
+        const TriangleMesh world = worldMesh(mesh);
+        checkMeshFitsVoxelGrid(world,
+                               scenePath + ":" + obstacle.jsonPath + " (mesh '" + mesh.name + "')",
+                               d.origin, glm::vec3(d.voxelSize), d.resolution);
         solver.addObstacle(
             voxelizeInsideCpu(world, d.origin, glm::vec3(d.voxelSize), d.resolution));
     }
@@ -137,7 +142,7 @@ SmokeSolver smokeSolverFrom(const Scene& scene, std::size_t domain) {
     settings.firstFrame = scene.time.frameStart;
     SmokeSolver solver(settings);
     for (const SmokeSource& source : smokeSourcesFrom(spec)) solver.addSource(source);
-    addObstacles(solver, spec, &scene.meshes);
+    addObstacles(solver, spec, &scene.meshes, scene.path);
 
     // The tracks that move sources, evaluated into a private copy of the scene (the others animate
     // what the simulation never reads); each substep rebuilds the sources from that copy, so

@@ -82,9 +82,20 @@ bool voxelizeColumnCrossing(vec3 a, vec3 b, vec3 c, vec2 p, EK_OUT(float) z) {
 }
 
 // The fine sample whose bit a crossing at fine z flips: the first with its centre strictly above
-// z, clamped to 0 below the volume; `height` (the column's samples) means none.
+// z, clamped to 0 below the volume; `height` (the column's samples) means none. Written with
+// comparisons that a NaN fails (clamp() of a NaN is a NaN, and int() of one is undefined: INT_MIN
+// on x86, a write far outside the bits): a crossing whose z overflowed is placed at the bottom.
 int voxelizeToggleIndex(float z, int height) {
-    return int(clamp(floor(z + 0.5f), 0.0f, float(height)));
+    const float k = floor(z + 0.5f);
+    if (!(k > 0.0f)) return 0;
+    if (!(k < float(height))) return height;
+    return int(k);
+}
+
+// Whether every coordinate of a fine-grid point is a number a float holds (no NaN, no infinity).
+bool voxelizeFinite(vec3 c) {
+    const float big = 3.4e38f;
+    return abs(c.x) <= big && abs(c.y) <= big && abs(c.z) <= big;
 }
 
 // Step 1 for one triangle (world positions): flips one bit in every fine column it crosses.
@@ -93,6 +104,11 @@ void voxelizeTriangle(vec3 pa, vec3 pb, vec3 pc, vec3 volumeMin, vec3 fineVoxelS
     const vec3 a = voxelizeFineCoord(pa, volumeMin, fineVoxelSize);
     const vec3 b = voxelizeFineCoord(pb, volumeMin, fineVoxelSize);
     const vec3 c = voxelizeFineCoord(pc, volumeMin, fineVoxelSize);
+    // A mesh far outside the volume in voxel units (radius 1e30 around a volume 1e-30 wide)
+    // overflows to infinities here, and the column range below would be int() of a NaN. No
+    // column can be told from another at that distance; the triangle is left out (the callers
+    // refuse such meshes first: checkMeshFitsVoxelGrid in core/mesh_voxelize.h).
+    if (!voxelizeFinite(a) || !voxelizeFinite(b) || !voxelizeFinite(c)) return;
     // Columns whose centres (i + ½, j + ½) lie in the projected bounding box.
     const vec2 lo = min(min(vec2(a.x, a.y), vec2(b.x, b.y)), vec2(c.x, c.y));
     const vec2 hi = max(max(vec2(a.x, a.y), vec2(b.x, b.y)), vec2(c.x, c.y));

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/mesh_primitives.h"
 #include "core/mesh_voxelize.h"
+#include "shaders/shared/platform.h"
 
 using namespace eikon;
 
@@ -93,4 +94,56 @@ TEST_CASE("a mesh with a bad index or position is refused by name", "[voxelize][
     m.positions[2].x = std::nanf("");
     CHECK_THROWS_WITH(checkMeshForVoxelization(m, "glass.obj"),
                       Catch::Contains("vertex 2 is not finite"));
+}
+
+// The shared kernel with a toggle hook that records every flip outside the fine grid instead of
+// writing it, so a test sees an out-of-range index whether or not the write would crash.
+EK_NAMESPACE_BEGIN
+struct CheckedVoxelizeKernel {
+    glm::ivec3 fineRes;
+    mutable int outOfRange = 0;
+    mutable int toggles = 0;
+
+    void toggleSample(int column, int k) const {
+        ++toggles;
+        if (column < 0 || column >= fineRes.x * fineRes.y || k < 0 || k >= fineRes.z) ++outOfRange;
+    }
+    uint fetchInsideWord(int) const { return 0u; }
+
+#include "shaders/shared/voxelize.h"
+};
+EK_NAMESPACE_END
+
+TEST_CASE("a mesh far outside the grid in voxel units toggles nothing out of range",
+          "[voxelize][core]") {
+    // Issue 14: an icosphere of radius 1e30 rendered in a volume 1e-30 wide (fine coordinates
+    // overflow to infinities), and the same sphere in a 2-unit volume (finite coordinates whose
+    // edge functions overflow to NaN): int() of a NaN indexed far outside the bits.
+    const TriangleMesh huge = icosphere(glm::vec3(0.0f), 1e30f, 1);
+    struct Case {
+        glm::vec3 gridMin;
+        glm::vec3 cell;
+    };
+    for (const Case& c : {Case{glm::vec3(0.0f), glm::vec3(1e-30f / 64.0f)},
+                          Case{glm::vec3(-1.0f), glm::vec3(2.0f / 64.0f)}}) {
+        shared::CheckedVoxelizeKernel kernel{glm::ivec3(64)};
+        for (const glm::uvec3& t : huge.triangles)
+            kernel.voxelizeTriangle(huge.positions[t.x], huge.positions[t.y], huge.positions[t.z],
+                                    c.gridMin, c.cell, kernel.fineRes);
+        CHECK(kernel.outOfRange == 0);
+        // The CPU voxelizer runs the same code; the scene-level check refuses such a mesh.
+        CHECK_NOTHROW(voxelizeInsideCpu(huge, c.gridMin, c.cell, glm::ivec3(64)));
+        try {
+            checkMeshFitsVoxelGrid(huge, "scene.json:/meshes/0", c.gridMin, c.cell, glm::ivec3(64));
+            FAIL("no error for a mesh 1e30 across");
+        } catch (const Error& e) {
+            CHECK(e.where() == "scene.json:/meshes/0");
+            CHECK(std::string(e.reason()).find("voxels (of ") != std::string::npos);
+            CHECK(std::string(e.reason()).find("the voxelizer resolves at most 1.67772e+07") !=
+                  std::string::npos);
+        }
+    }
+    // A mesh inside its grid passes the check.
+    CHECK_NOTHROW(checkMeshFitsVoxelGrid(icosphere(glm::vec3(0.5f), 0.3f, 1), "m", glm::vec3(0.0f),
+                                         glm::vec3(1.0f / 64.0f), glm::ivec3(64)));
 }

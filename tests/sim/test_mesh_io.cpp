@@ -153,12 +153,26 @@ TEST_CASE("truncated and corrupt mesh files are errors, not garbage or a hang", 
     writeText(dir + "/cut_header.ply", ply.substr(0, ply.find("end_header") - 5));
     CHECK(contains(loadError(dir + "/cut_header.ply"), "header never ends"));
     writeText(dir + "/cut_data.ply", ply.substr(0, ply.find("end_header") + 11 + 60));
-    CHECK(contains(loadError(dir + "/cut_data.ply"), "not a readable PLY file"));
+    CHECK(contains(loadError(dir + "/cut_data.ply"),
+                   "element 'vertex' declares 8 items, which need at least 96 bytes, but the file "
+                   "has 60 bytes left for it: truncated or corrupt"));
 
     writeOff(dir + "/whole.off", cube);
     const std::string off = readText(dir + "/whole.off");
     writeText(dir + "/cut.off", off.substr(0, off.size() - 12));
     CHECK(contains(loadError(dir + "/cut.off"), "truncated"));
+
+    // Counts the file cannot back: OpenMesh's OFF reader looped over them past `timeout 20`.
+    writeText(dir + "/huge.off", "OFF\n4000000000 4000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    CHECK(loadError(dir + "/huge.off") ==
+          "the OFF header declares 4000000000 vertices and 4000000000 faces, which need at least "
+          "32000000000 bytes, but 27 follow the counts: truncated or corrupt");
+    writeText(dir + "/bad_counts.off", "OFF\n3 -1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    CHECK(loadError(dir + "/bad_counts.off") ==
+          "expected the vertex, face and edge counts after 'OFF', got '3 -1 0'");
+    // Raw bytes quoted from a file are escaped.
+    writeText(dir + "/escape.obj", "v 0 0 0\nv \x1b[2J 0 0\nv 0 1 0\nf 1 2 3\n");
+    CHECK(contains(loadError(dir + "/escape.obj"), "vertex 2 ('v \\x1b[2J 0 0')"));
 
     writeText(dir + "/bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
     CHECK(contains(loadError(dir + "/bad_index.obj"), "face 1 refers to a vertex"));
@@ -192,4 +206,15 @@ TEST_CASE("NaN and infinite mesh vertices are errors naming the file and the ver
               "solid t\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex nan 0 0\n"
               "vertex 0 1 0\nendloop\nendfacet\nendsolid t\n");
     CHECK(contains(loadError(dir + "/nan_ascii.stl"), "vertex 2 ('vertex nan 0 0')"));
+}
+
+TEST_CASE("OpenMesh's notes that quote the file are escaped", "[mesh_io]") {
+    // A material library name with an escape sequence would otherwise reach the terminal raw in
+    // `eikon info`'s reader notes.
+    const std::string dir = scratchDir("mesh_io_notes");
+    writeText(dir + "/esc.obj", "mtllib \x1b[31mred.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const LoadedMesh loaded = loadMesh(dir + "/esc.obj");
+    REQUIRE(loaded.notes.size() == 1);
+    CHECK(contains(loaded.notes[0], "\\x1b[31mred.mtl"));
+    CHECK(loaded.notes[0].find('\x1b') == std::string::npos);
 }

@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "core/mesh_placement.h"
 #include "core/scene.h"
 #include "sim/pressure_solver.h"
@@ -190,4 +191,23 @@ TEST_CASE("a plume rises around a glass mesh obstacle, never through it",
     // plume got round the glass rather than a trace diffusing there.
     CHECK(insideSolid == 0.0);
     CHECK(besideAbove > 1e-3 * total);
+}
+
+TEST_CASE(
+    "a mesh obstacle far outside the domain in cells is an error naming it, not a write "
+    "out of range",
+    "[smoke][obstacle][mesh]") {
+    // Issue 14: an icosphere of radius 1e30 as an obstacle wrote outside the solid bits.
+    const std::string huge =
+        R"({"name": "glass", "shape": {"type": "icosphere", "radius": 1e30, "subdivisions": 1},
+            "ior": 1.5})";
+    const Scene scene = parseScene(plumeScene(huge, R"({"mesh": "glass"})"), "glass.json");
+    try {
+        sim::smokeSolverFrom(scene);
+        FAIL("no error for an obstacle 1e30 across");
+    } catch (const Error& e) {
+        CHECK(e.where() == "glass.json:/simulation/obstacles/0 (mesh 'glass')");
+        CHECK(e.reason().find("outside the grid; the voxelizer resolves at most 1.67772e+07") !=
+              std::string::npos);
+    }
 }
