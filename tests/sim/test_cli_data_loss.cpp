@@ -4,7 +4,8 @@
 // full disk fails with ENOSPC): it needs no root and no tmpfs, so CI runs it. Afterwards every
 // file at a frame's name is a complete frame, the run's frames before the failure are its own,
 // no frame of the older run is left after them to mix with it, and the exit status and the one
-// error line tell what happened.
+// error line tell what happened. A kill -9 leaves each frame file whole too, old or new (the
+// frames before the kill are the new run's, those after it the old run's, until the next run).
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -148,4 +149,43 @@ TEST_CASE("a stale partial frame left by a killed run is removed on the next run
     CHECK_FALSE(fs::exists(frameFile(cache, 2) + ".partial"));
     CHECK(fs::exists(cache + "/notes.partial"));
     CHECK(r.err.find("puff_0002.vdb.partial, left by an interrupted run") != std::string::npos);
+}
+
+TEST_CASE("a run killed at any point leaves every frame file complete",
+          "[cli][simulate][data-loss]") {
+    const std::string dir = scratchDir("cli_simulate_killed");
+    const std::string oldScene = dir + "/old.json", newScene = dir + "/new.json";
+    writeFile(oldScene, plume("2"));
+    writeFile(newScene, plume("4"));
+    const std::string reference = dir + "/reference", cache = dir + "/cache";
+    fs::remove_all(reference);
+    REQUIRE(runEikon("simulate " + quoted(newScene) + " -o " + quoted(reference), dir).exitCode ==
+            0);
+    // kill -9 after these delays (seconds): wherever it lands (before the first frame, inside a
+    // write, between frames, after the end), each file at a frame's name is the old run's frame
+    // or the new run's, whole, and the next run clears what the killed one left.
+    for (const char* delay : {"0.05", "0.3", "0.45", "0.6", "0.9"}) {
+        INFO("killed after " << delay << " s");
+        fs::remove_all(cache);
+        REQUIRE(runEikon("simulate " + quoted(oldScene) + " -o " + quoted(cache), dir).exitCode ==
+                0);
+        std::vector<std::string> old;
+        for (int f = 1; f <= 6; ++f) old.push_back(readFile(frameFile(cache, f)));
+        const RunResult killed = runEikon("simulate " + quoted(newScene) + " -o " + quoted(cache),
+                                          dir, std::string("timeout -s KILL ") + delay);
+        CHECK((killed.exitCode == 0 || killed.exitCode == 137));
+        for (int f = 1; f <= 6; ++f) {
+            const std::string path = frameFile(cache, f);
+            REQUIRE(fs::exists(path));
+            const std::string bytes = readFile(path);
+            CHECK((bytes == old[size_t(f - 1)] || bytes == readFile(frameFile(reference, f))));
+        }
+        const RunResult again =
+            runEikon("simulate " + quoted(newScene) + " -o " + quoted(cache), dir);
+        REQUIRE(again.exitCode == 0);
+        for (const std::string& name : filesIn(cache))
+            CHECK(name.find(".partial") == std::string::npos);
+        for (int f = 1; f <= 6; ++f)
+            CHECK(readFile(frameFile(cache, f)) == readFile(frameFile(reference, f)));
+    }
 }
