@@ -217,6 +217,9 @@ int runBenchSmoke(BenchSmokeOptions o) {
     std::printf("# eikon bench smoke: ms per solver step by stage\n");
     printBenchHeader(stdout, o.threads);
     printSettings(scene, scene.simulations.front(), o);
+    if (scene.simulations.size() > 1)
+        std::printf("# the scene has %zu smoke domains; this times the first, '%s'\n",
+                    scene.simulations.size(), scene.simulations.front().label.c_str());
     std::fflush(stdout);
 
     std::unique_ptr<std::ofstream> tsv;
