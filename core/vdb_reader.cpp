@@ -6,6 +6,7 @@
 #include <openvdb/io/GridDescriptor.h>
 
 #include "core/error.h"
+#include "core/vdb_grid_check.h"
 #include "core/vdb_import.h"
 
 namespace eikon {
@@ -35,6 +36,27 @@ struct VdbReader::Impl : public openvdb::io::Archive {
 
 namespace {
 
+// Walks grid `gd`'s bytes as Archive::readGrid will read them (compression flags, metadata,
+// transform, tree) and throws VdbFormatError on a size or flag OpenVDB would trust. Grid types
+// the walk does not know, instances (no tree of their own) and files older than format 222 are
+// left to OpenVDB as before.
+void checkGridBytes(std::istream& is, const openvdb::io::GridDescriptor& gd,
+                    const VdbReader::Entry& e) {
+    if (openvdb::io::getFormatVersion(is) < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+        return;
+    gd.seekToGrid(is);
+    if (e.endPos - e.gridPos < 4) throw VdbFormatError("the grid has no compression flags");
+    std::uint32_t compression = 0;
+    is.read(reinterpret_cast<char*>(&compression), sizeof(compression));
+    checkVdbMetadata(is, e.endPos);
+    // Transforms are fixed-size records that OpenVDB reads safely; read one to get past it.
+    openvdb::math::Transform transform;
+    transform.read(is);
+    VdbTreeLayout layout;
+    if (gd.isInstance() || !vdbTreeLayoutFor(e.type, e.savedAsHalf, layout)) return;
+    checkVdbTree(is, e.endPos, layout, compression);
+}
+
 std::string truncatedOrCorrupt(const std::string& what, const std::string& detail) {
     return what + " could not be read; the file is truncated or corrupt (" + detail + ")";
 }
@@ -61,6 +83,15 @@ VdbReader::VdbReader(const std::string& path) : path_(path), impl_(std::make_uni
     try {
         impl_->tagStream(is);
         meta_ = std::make_shared<openvdb::MetaMap>();
+        {
+            const std::streampos metaPos = is.tellg();
+            try {
+                checkVdbMetadata(is, std::int64_t(impl_->fileSize));
+            } catch (const VdbFormatError& err) {
+                throw Error(path, truncatedOrCorrupt("the file metadata", err.what()));
+            }
+            is.seekg(metaPos);
+        }
         meta_->readMeta(is);
         const int32_t count = Impl::gridCount(is);
         if (count < 0 || count > 1000000)
@@ -119,6 +150,8 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
         const openvdb::io::GridDescriptor& gd = impl_->descriptors[index];
         openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(e.type);
         grid->setSaveFloatAsHalf(e.savedAsHalf);
+        impl_->stream.clear();
+        checkGridBytes(impl_->stream, gd, e);
         impl_->stream.clear();
         gd.seekToGrid(impl_->stream);
         Impl::readGridData(grid, gd, impl_->stream);

@@ -73,6 +73,20 @@ TEST_CASE("eikon info on fuzzed mesh files: one line each, no crash, no hang", "
     }
 }
 
+TEST_CASE("eikon info on the issue's corrupt VDB: one line, no heap overflow", "[cli]") {
+    // houdini_vel_constant.vdb with a leaf's compressed byte count garbled: OpenVDB read past
+    // the leaf ("free(): invalid next size", SIGABRT) before core/vdb_grid_check.cpp.
+    const std::string dir = scratchDir("cli_hostile_vdb");
+    std::string bytes =
+        eikon::test::readFile(eikon::test::sharedData("vdb/houdini_vel_constant.vdb"));
+    REQUIRE(bytes.size() == 117684);
+    bytes.replace(100353, 4, std::string("\xff\xff\0\0", 4));
+    const std::string path = dir + "/bad.vdb";
+    eikon::test::writeFile(path, bytes);
+    const RunResult r = runEikon("info " + quoted(path), dir, "timeout 20");
+    checkOneLineError(r, path + ": grid 'vel' could not be read; the file is truncated or corrupt");
+}
+
 TEST_CASE("eikon render and simulate on fuzzed scenes: one line naming the pointer", "[cli]") {
     const std::string dir = scratchDir("cli_hostile_scenes");
     const struct {
