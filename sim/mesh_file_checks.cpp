@@ -181,11 +181,10 @@ void checkObjVertices(const std::string& path, const std::string& bytes, std::si
 
 namespace {
 
-// The whitespace-separated words of an OFF file, '#' comments skipped, up to `limit` of them.
-std::vector<std::string> offWords(const std::string& bytes, std::size_t limit, std::size_t& after) {
-    std::vector<std::string> words;
-    std::size_t i = 0;
-    while (i < bytes.size() && words.size() < limit) {
+// Finds the next whitespace-separated word of an OFF file at or after `i` ('#' comments skipped):
+// it spans [start, i). False at the end of the bytes.
+bool nextOffWord(const std::string& bytes, std::size_t& i, std::size_t& start) {
+    while (i < bytes.size()) {
         if (bytes[i] == '#') {
             i = bytes.find('\n', i);
             if (i == std::string::npos) i = bytes.size();
@@ -195,10 +194,19 @@ std::vector<std::string> offWords(const std::string& bytes, std::size_t limit, s
             ++i;
             continue;
         }
-        const std::size_t start = i;
+        start = i;
         while (i < bytes.size() && !std::isspace((unsigned char)bytes[i]) && bytes[i] != '#') ++i;
-        words.push_back(bytes.substr(start, i - start));
+        return true;
     }
+    return false;
+}
+
+// The words of an OFF file, up to `limit` of them; `after` is where the last one ends.
+std::vector<std::string> offWords(const std::string& bytes, std::size_t limit, std::size_t& after) {
+    std::vector<std::string> words;
+    std::size_t i = 0, start = 0;
+    while (words.size() < limit && nextOffWord(bytes, i, start))
+        words.push_back(bytes.substr(start, i - start));
     after = i;
     return words;
 }
@@ -253,22 +261,10 @@ void checkOffCounts(const std::string& path, const std::string& bytes) {
 void checkOffLength(const std::string& path, const std::string& bytes, std::size_t verticesRead,
                     const std::vector<std::vector<int>>& facesRead) {
     std::size_t tokens = 0;
-    bool binary = false;
-    for (std::size_t i = 0; i < bytes.size();) {
-        if (bytes[i] == '#') {
-            i = bytes.find('\n', i);
-            if (i == std::string::npos) break;
-            continue;
-        }
-        if (std::isspace((unsigned char)bytes[i])) {
-            ++i;
-            continue;
-        }
-        const std::size_t start = i;
-        while (i < bytes.size() && !std::isspace((unsigned char)bytes[i]) && bytes[i] != '#') ++i;
+    for (std::size_t i = 0, start = 0; nextOffWord(bytes, i, start);) {
         ++tokens;
-        if (tokens == 2 && bytes.compare(start, i - start, "BINARY") == 0) binary = true;
-        if (binary) return;  // binary OFF: OpenMesh reads counted records; nothing to count here
+        // Binary OFF: OpenMesh reads counted records; nothing to count here.
+        if (tokens == 2 && bytes.compare(start, i - start, "BINARY") == 0) return;
     }
     std::size_t needed = 1 + 3 + 3 * verticesRead;  // keyword, three counts, coordinates
     for (const std::vector<int>& face : facesRead) needed += 1 + face.size();
