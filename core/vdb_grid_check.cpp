@@ -327,6 +327,21 @@ std::int64_t checkVdbMetadata(std::istream& is, std::int64_t end) {
     return c.pos();
 }
 
+std::int64_t checkVdbString(std::istream& is, std::int64_t end, const char* what) {
+    Cursor c(is, end);
+    readName(c, what);
+    return c.pos();
+}
+
+std::int64_t checkVdbGridDescriptor(std::istream& is, std::int64_t end, bool hasInstanceParent) {
+    Cursor c(is, end);
+    readName(c, "a grid name");
+    readName(c, "a grid type");
+    if (hasInstanceParent) readName(c, "a grid's instance parent name");
+    c.skip(3 * sizeof(std::int64_t), "a grid's offsets");
+    return c.pos();
+}
+
 std::int64_t checkVdbTree(std::istream& is, std::int64_t end, const VdbTreeLayout& L,
                           std::uint32_t compression) {
     Cursor c(is, end);

@@ -6,6 +6,7 @@
 #include <openvdb/io/GridDescriptor.h>
 
 #include "core/error.h"
+#include "core/printable.h"
 #include "core/vdb_grid_check.h"
 #include "core/vdb_import.h"
 
@@ -49,7 +50,12 @@ void checkGridBytes(std::istream& is, const openvdb::io::GridDescriptor& gd,
     std::uint32_t compression = 0;
     is.read(reinterpret_cast<char*>(&compression), sizeof(compression));
     checkVdbMetadata(is, e.endPos);
-    // Transforms are fixed-size records that OpenVDB reads safely; read one to get past it.
+    // A transform is its map's type name, then a fixed-size record that OpenVDB reads safely;
+    // the name's length is checked first (OpenVDB allocates it unread), then one is read to get
+    // past it.
+    const std::streampos transformPos = is.tellg();
+    checkVdbString(is, e.endPos, "the transform's map type");
+    is.seekg(transformPos);
     openvdb::math::Transform transform;
     transform.read(is);
     VdbTreeLayout layout;
@@ -57,8 +63,15 @@ void checkGridBytes(std::istream& is, const openvdb::io::GridDescriptor& gd,
     checkVdbTree(is, e.endPos, layout, compression);
 }
 
+// `detail` is OpenVDB's message, which may quote the file's bytes: escaped here.
 std::string truncatedOrCorrupt(const std::string& what, const std::string& detail) {
-    return what + " could not be read; the file is truncated or corrupt (" + detail + ")";
+    return what + " could not be read; the file is truncated or corrupt (" +
+           printable(detail, 200) + ")";
+}
+
+// A grid as messages name it; the name is the file's and may hold control characters.
+std::string gridLabel(const std::string& name) {
+    return "grid '" + printable(name) + "'";
 }
 
 }  // namespace
@@ -77,7 +90,8 @@ VdbReader::VdbReader(const std::string& path) : path_(path), impl_(std::make_uni
     try {
         impl_->readHeaderOf(is);
     } catch (const std::exception& e) {
-        throw Error(path, std::string("not a readable VDB file (") + e.what() + ")");
+        throw Error(path,
+                    std::string("not a readable VDB file (") + printable(e.what(), 200) + ")");
     }
     fileVersion_ = impl_->version();
     try {
@@ -99,6 +113,13 @@ VdbReader::VdbReader(const std::string& path) : path_(path), impl_(std::make_uni
         for (int32_t i = 0; i < count; ++i) {
             openvdb::io::GridDescriptor gd;
             Entry e;
+            {
+                const std::streampos descriptorPos = is.tellg();
+                checkVdbGridDescriptor(is, std::int64_t(impl_->fileSize),
+                                       openvdb::io::getFormatVersion(is) >=
+                                           openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING);
+                is.seekg(descriptorPos);
+            }
             try {
                 gd.read(is);
             } catch (const openvdb::LookupError&) {
@@ -118,7 +139,7 @@ VdbReader::VdbReader(const std::string& path) : path_(path), impl_(std::make_uni
                 e.endPos = gd.getEndPos();
             }
             if (e.gridPos < 0 || e.gridPos > e.endPos || std::uintmax_t(e.endPos) > impl_->fileSize)
-                throw Error(path, "grid '" + e.name + "' should end at byte " +
+                throw Error(path, gridLabel(e.name) + " should end at byte " +
                                       std::to_string(e.endPos) + " but the file has " +
                                       std::to_string(impl_->fileSize) +
                                       " bytes: the file is truncated or corrupt");
@@ -142,10 +163,10 @@ std::string VdbReader::creator() const {
 
 openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
     const Entry& e = entries_.at(index);
-    const std::string what = "grid '" + e.name + "'";
+    const std::string what = gridLabel(e.name);
     if (!e.registered)
-        throw UnsupportedGridError(path_,
-                                   what + " has type " + e.type + ", which is not registered here");
+        throw UnsupportedGridError(
+            path_, what + " has type " + printable(e.type) + ", which is not registered here");
     try {
         const openvdb::io::GridDescriptor& gd = impl_->descriptors[index];
         openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(e.type);
@@ -158,6 +179,13 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
         if (gd.isInstance()) {
             for (size_t p = 0; p < entries_.size(); ++p)
                 if (p != index && impl_->descriptors[p].uniqueName() == gd.instanceParentName()) {
+                    // OpenVDB writes an instance of the grid that holds the tree, never of
+                    // another instance; following one here could recurse without end (two
+                    // grids naming each other overflowed the stack).
+                    if (impl_->descriptors[p].isInstance())
+                        throw std::runtime_error("its instance parent " +
+                                                 gridLabel(entries_[p].name) +
+                                                 " is an instance itself");
                     grid->setTree(readGrid(p)->baseTreePtr());
                     return grid;
                 }
@@ -167,9 +195,11 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
     } catch (const Error&) {
         throw;
     } catch (const openvdb::LookupError& ex) {
-        throw UnsupportedGridError(path_, what + " cannot be decoded here (" + ex.what() + ")");
+        throw UnsupportedGridError(
+            path_, what + " cannot be decoded here (" + printable(ex.what(), 200) + ")");
     } catch (const openvdb::KeyError& ex) {
-        throw UnsupportedGridError(path_, what + " cannot be decoded here (" + ex.what() + ")");
+        throw UnsupportedGridError(
+            path_, what + " cannot be decoded here (" + printable(ex.what(), 200) + ")");
     } catch (const std::exception& ex) {
         throw Error(path_, truncatedOrCorrupt(what, ex.what()));
     }

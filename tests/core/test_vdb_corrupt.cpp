@@ -184,3 +184,44 @@ TEST_CASE("Corrupt VDB: 200 seeded mutations of the tree end in success or one e
     }
     CHECK(errors > 0);
 }
+
+TEST_CASE(
+    "Corrupt VDB: two grids that are instances of each other are an error, not a stack "
+    "overflow",
+    "[vdb][vdb-corrupt]") {
+    // tests/fuzz/regressions/vdb/instance_cycle.vdb: grid 'b' instances 'a' as OpenVDB wrote it,
+    // and 'a' was made an instance of 'b' (its descriptor's parent name set, offsets shifted).
+    // Following the parents recursed until the stack ran out (SIGSEGV) before the reader
+    // refused an instance of an instance.
+    const std::string path = test::sourcePath("tests/fuzz/regressions/vdb/instance_cycle.vdb");
+    CHECK(errorOf(path) ==
+          path +
+              ": grid 'a' could not be read; the file is truncated or corrupt (its "
+              "instance parent grid 'b' is an instance itself)");
+}
+
+TEST_CASE("Corrupt VDB: a name's length is checked before OpenVDB allocates it",
+          "[vdb][vdb-corrupt]") {
+    // OpenVDB's readString makes a string of the stated length before reading it: a grid
+    // descriptor's name length of 3.2 GB (tests/fuzz/regressions/vdb/descriptor_name_length.vdb,
+    // found by fuzz_vdb) and a transform's map type name asked for that much memory.
+    const std::string regression =
+        test::sourcePath("tests/fuzz/regressions/vdb/descriptor_name_length.vdb");
+    CHECK(errorOf(regression)
+              .find(": the grid directory could not be read; the file is truncated "
+                    "or corrupt (a grid") != std::string::npos);
+
+    const std::string dir = scratchDir("vdb_corrupt_names");
+    Bytes name = houdiniVel();
+    put<std::uint32_t>(name, 124, 0xfffffff0u);  // the descriptor's "vel"
+    CHECK(errorOf(write(dir, "name.vdb", name)) ==
+          dir +
+              "/name.vdb: the grid directory could not be read; the file is truncated or corrupt "
+              "(a grid name needs 4294967280 bytes but 117556 remain at byte 128)");
+    Bytes map = houdiniVel();
+    put<std::uint32_t>(map, 813, 0xfffffff0u);  // "UniformScaleTranslateMap"
+    CHECK(errorOf(write(dir, "map.vdb", map)) ==
+          dir +
+              "/map.vdb: grid 'vel' could not be read; the file is truncated or corrupt (the "
+              "transform's map type needs 4294967280 bytes but 116867 remain at byte 817)");
+}
