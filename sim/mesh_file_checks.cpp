@@ -181,11 +181,13 @@ void checkObjVertices(const std::string& path, const std::string& bytes, std::si
 
 namespace {
 
-// Finds the next whitespace-separated word of an OFF file at or after `i` ('#' comments skipped):
-// it spans [start, i). False at the end of the bytes.
-bool nextOffWord(const std::string& bytes, std::size_t& i, std::size_t& start) {
+// Finds the next whitespace-separated word of an OFF file at or after `i`, '#' comments skipped
+// unless `comments` is false (OpenMesh reads the counts with `>>`, which knows none): it spans
+// [start, i). False at the end of the bytes.
+bool nextOffWord(const std::string& bytes, std::size_t& i, std::size_t& start,
+                 bool comments = true) {
     while (i < bytes.size()) {
-        if (bytes[i] == '#') {
+        if (comments && bytes[i] == '#') {
             i = bytes.find('\n', i);
             if (i == std::string::npos) i = bytes.size();
             continue;
@@ -195,20 +197,12 @@ bool nextOffWord(const std::string& bytes, std::size_t& i, std::size_t& start) {
             continue;
         }
         start = i;
-        while (i < bytes.size() && !std::isspace((unsigned char)bytes[i]) && bytes[i] != '#') ++i;
+        while (i < bytes.size() && !std::isspace((unsigned char)bytes[i]) &&
+               !(comments && bytes[i] == '#'))
+            ++i;
         return true;
     }
     return false;
-}
-
-// The words of an OFF file, up to `limit` of them; `after` is where the last one ends.
-std::vector<std::string> offWords(const std::string& bytes, std::size_t limit, std::size_t& after) {
-    std::vector<std::string> words;
-    std::size_t i = 0, start = 0;
-    while (words.size() < limit && nextOffWord(bytes, i, start))
-        words.push_back(bytes.substr(start, i - start));
-    after = i;
-    return words;
 }
 
 bool wholeNumber(const std::string& word, std::uint64_t& value) {
@@ -221,36 +215,23 @@ bool wholeNumber(const std::string& word, std::uint64_t& value) {
 
 }  // namespace
 
-void checkOffCounts(const std::string& path, const std::string& bytes) {
-    std::size_t after = 0;
-    std::vector<std::string> w = offWords(bytes, 5, after);
-    if (w.empty()) return;
-    const std::string& keyword = w[0];
-    // [ST][C][N][4][n]OFF: `n` puts the dimension before the counts, `4` adds a coordinate.
-    if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return;
-    const std::string prefix = keyword.substr(0, keyword.size() - 3);
-    std::size_t next = 1;
-    if (w.size() > next && w[next] == "BINARY") return;
-    std::uint64_t dimension = 3;
-    if (prefix.find('n') != std::string::npos) {
-        if (w.size() <= next || !wholeNumber(w[next], dimension)) return;  // OpenMesh says why
-        ++next;
-    }
-    if (prefix.find('4') != std::string::npos) ++dimension;
+void checkOffCounts(const std::string& path, const std::string& bytes, const OffHeader& header) {
+    if (!header.readable || header.binary) return;  // OpenMesh refuses it, or sim/off_binary.h
+    // OpenMesh reads the counts with `>>` from after the first line: plain words, no comments.
+    std::vector<std::string> w;
+    std::size_t i = header.bodyOffset, start = 0;
+    while (w.size() < 3 && nextOffWord(bytes, i, start, /*comments=*/false))
+        w.push_back(bytes.substr(start, i - start));
     std::uint64_t vertices = 0, faces = 0;
-    if (w.size() < next + 3 || !wholeNumber(w[next], vertices) ||
-        !wholeNumber(w[next + 1], faces)) {
+    if (w.size() < 3 || !wholeNumber(w[0], vertices) || !wholeNumber(w[1], faces)) {
         std::string got;
-        for (std::size_t k = next; k < w.size() && k < next + 3; ++k)
-            got += (got.empty() ? "" : " ") + w[k];
-        throw Error(path, "expected the vertex, face and edge counts after '" + printable(keyword) +
-                              "', got '" + printable(got) + "'");
+        for (const std::string& word : w) got += (got.empty() ? "" : " ") + word;
+        const std::string line = bytes.substr(0, header.bodyOffset);
+        throw Error(path, "expected the vertex, face and edge counts after '" +
+                              printable(withoutLineEnd(line)) + "', got '" + printable(got) + "'");
     }
-    // Recount from the end of the counts: offWords stopped after up to five words.
-    std::size_t end = 0;
-    offWords(bytes, next + 3, end);
-    const std::uint64_t available = bytes.size() - end;
-    const std::uint64_t needed = vertices * dimension * 2 + faces * 2;
+    const std::uint64_t available = bytes.size() - i;
+    const std::uint64_t needed = vertices * 3 * 2 + faces * 2;
     if (needed > available + 1)
         throw Error(path, "the OFF header declares " + std::to_string(vertices) + " vertices and " +
                               std::to_string(faces) + " faces, which need at least " +
@@ -261,11 +242,7 @@ void checkOffCounts(const std::string& path, const std::string& bytes) {
 void checkOffLength(const std::string& path, const std::string& bytes, std::size_t verticesRead,
                     const std::vector<std::vector<int>>& facesRead) {
     std::size_t tokens = 0;
-    for (std::size_t i = 0, start = 0; nextOffWord(bytes, i, start);) {
-        ++tokens;
-        // Binary OFF: OpenMesh reads counted records; nothing to count here.
-        if (tokens == 2 && bytes.compare(start, i - start, "BINARY") == 0) return;
-    }
+    for (std::size_t i = 0, start = 0; nextOffWord(bytes, i, start);) ++tokens;
     std::size_t needed = 1 + 3 + 3 * verticesRead;  // keyword, three counts, coordinates
     for (const std::vector<int>& face : facesRead) needed += 1 + face.size();
     if (tokens < needed)

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/off_header.h"
 #include "sim/ply_header.h"
 
 namespace eikon {
@@ -46,12 +47,13 @@ std::size_t checkVertexLines(const std::string& path, const std::string& bytes,
 // After reading an OBJ: its `v` lines are sound and OpenMesh read as many vertices.
 void checkObjVertices(const std::string& path, const std::string& bytes, std::size_t verticesRead);
 
-// Before reading an ASCII OFF: the counts on its header line are whole numbers that the rest of
-// the file can back (every vertex at least one byte and a separator per coordinate, every face
-// at least its count). OpenMesh sizes its buffers from them and loops over them without checking
-// the end of the file: "OFF\n4000000000 4000000000 0" ran past `timeout 20`. Binary OFF is left to
-// OpenMesh.
-void checkOffCounts(const std::string& path, const std::string& bytes);
+// Before reading an ASCII OFF: the counts after its first line (where OpenMesh reads them,
+// sim/off_header.h) are whole numbers that the rest of the file can back (every vertex at least
+// one byte and a separator per coordinate, every face at least its count). OpenMesh sizes its
+// buffers from them and loops over them without checking the end of the file:
+// "OFF\n4000000000 4000000000 0" ran past `timeout 20`. Files OpenMesh refuses, and binary ones
+// (sim/off_binary.h), are left alone.
+void checkOffCounts(const std::string& path, const std::string& bytes, const OffHeader& header);
 
 // After reading an ASCII OFF: the file holds at least the numbers that the vertices and faces
 // OpenMesh returned need (three per vertex, one count plus the indices per face).
