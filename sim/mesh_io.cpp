@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/printable.h"
 #include "sim/mesh_file_checks.h"
+#include "sim/obj_face_lines.h"
 #include "sim/off_binary.h"
 #include "sim/off_header.h"
 #include "sim/openmesh_face_recorder.h"
@@ -108,6 +109,7 @@ LoadedMesh loadMesh(const std::string& path) {
         else
             checkOffCounts(path, bytes, off);
     }
+    if (ext == ".obj") checkObjFaceLines(path, bytes);
     if (ext == ".stl") {
         if (isAsciiStl(bytes))
             checkVertexLines(path, bytes, "vertex");
