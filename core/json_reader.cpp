@@ -304,7 +304,9 @@ std::string appendPointer(const std::string& pointer, const std::string& key) {
             escaped += c;
         }
     }
-    return pointer + "/" + escaped;
+    // The key is the user's bytes and the pointer goes into messages as their where(): a tab or
+    // a line end in a key must not reach the terminal raw.
+    return pointer + "/" + printable(escaped);
 }
 
 // ---- Value -----------------------------------------------------------------------------------
