@@ -87,6 +87,20 @@ TEST_CASE("eikon info on the issue's corrupt VDB: one line, no heap overflow", "
     checkOneLineError(r, path + ": grid 'vel' could not be read; the file is truncated or corrupt");
 }
 
+TEST_CASE("eikon info on the fuzzing regressions: one line each", "[cli]") {
+    // Every input under tests/fuzz/regressions that crashed or hung a reader (RELIABILITY.md).
+    const std::string dir = scratchDir("cli_fuzz_regressions");
+    for (const char* name :
+         {"vdb/instance_cycle.vdb", "off/binary_face_count.off", "off/header_without_line_end.off",
+          "off/counts_after_first_line.off", "obj/face_without_vertex_index.obj"}) {
+        INFO(name);
+        const std::string path =
+            eikon::test::sourcePath(std::string("tests/fuzz/regressions/") + name);
+        const RunResult r = runEikon("info " + quoted(path), dir, "timeout 20");
+        checkOneLineError(r, path);
+    }
+}
+
 TEST_CASE("eikon render and simulate on fuzzed scenes: one line naming the pointer", "[cli]") {
     const std::string dir = scratchDir("cli_hostile_scenes");
     const struct {
