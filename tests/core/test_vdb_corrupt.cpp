@@ -225,3 +225,40 @@ TEST_CASE("Corrupt VDB: a name's length is checked before OpenVDB allocates it",
               "/map.vdb: grid 'vel' could not be read; the file is truncated or corrupt (the "
               "transform's map type needs 4294967280 bytes but 116867 remain at byte 817)");
 }
+
+TEST_CASE("Grids whose bytes the reader cannot check are skipped by name, not read",
+          "[vdb][vdb-corrupt]") {
+    // A point grid's Blosc block size went to OpenVDB unchecked and asked for 10^17 bytes
+    // (tests/fuzz/regressions/vdb/point_grid_blosc_size.vdb, found by fuzz_vdb). Point grids, and
+    // every grid of a file older than format 222, are now listed but not decoded.
+    const VdbFileInfo points = inspectVdb(test::sourcePath("tests/fuzz/corpus/vdb/points.vdb"));
+    REQUIRE(points.grids.size() == 2);
+    for (const GridInfo& g : points.grids) {
+        INFO(g.name);
+        CHECK(g.readable == (g.name == "density"));
+        if (g.name == "points")
+            CHECK(g.problem ==
+                  "grid 'points' has type Tree_ptdataidx32_5_4_3, whose bytes this reader cannot "
+                  "check (it reads float, double, integer, vector, bool and mask grids)");
+    }
+    const std::string regression =
+        test::sourcePath("tests/fuzz/regressions/vdb/point_grid_blosc_size.vdb");
+    try {
+        inspectVdb(regression);
+        FieldRegistry fields;
+        importVdb(regression, fields);
+    } catch (const Error& e) {
+        CHECK(e.where() == regression);
+    }
+
+    Bytes old = houdiniVel();
+    put<std::uint32_t>(old, 8, 219);  // the file format version (220 and 221 add a header field)
+    const std::string path = write(scratchDir("vdb_old_format"), "old.vdb", old);
+    const VdbFileInfo info = inspectVdb(path);
+    REQUIRE(info.grids.size() == 1);
+    CHECK_FALSE(info.grids[0].readable);
+    CHECK(info.grids[0].problem ==
+          "grid 'vel' is stored in VDB file format 219, older than the 222 this reader can check");
+    FieldRegistry fields;
+    CHECK_THROWS_AS(importVdb(path, fields), Error);
+}
