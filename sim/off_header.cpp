@@ -16,8 +16,10 @@ OffHeader readOffHeader(const std::string& bytes) {
         return true;
     };
     if (next("ST")) h.vertexBytes += 8;  // u, v
-    if (next("C")) h.vertexBytes += 12;  // three colour values, integers or floats
-    if (next("N")) h.vertexBytes += 12;  // a normal
+    h.colours = next("C");
+    if (h.colours) h.vertexBytes += 12;  // three colour values, integers or floats
+    h.normals = next("N");
+    if (h.normals) h.vertexBytes += 12;
     const bool homogeneous = next("4");  // four coordinates per vertex
     const bool dimension = next("n");    // the dimension written before the counts
     if (!next("OFF")) return h;

@@ -19,6 +19,8 @@ struct OffHeader {
     bool binary = false;
     std::size_t bodyOffset = 0;  // just past the first line's '\n' (the file's size without one)
     bool lineEnded = false;      // the first line has a '\n'
+    bool normals = false;        // N: each vertex has a normal after its position
+    bool colours = false;  // C: vertices and faces have colours, each face's on its line's rest
     // Binary: the bytes of one vertex record (x, y, z as float; 8 more for ST, 12 for C, 12
     // for N).
     std::uint64_t vertexBytes = 12;

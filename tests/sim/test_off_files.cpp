@@ -2,7 +2,8 @@
 // and the counts come from after it. Binary files are walked record by record
 // (sim/off_binary.h), ASCII counts are checked against the bytes (sim/mesh_file_checks.h). Before,
 // counts the file could not back made OpenMesh allocate and loop by them: out of memory, or past
-// `timeout 20` at 2 GB. tests/fuzz/regressions/off/ holds the files fuzz_off found.
+// `timeout 20` at 2 GB. ASCII bodies are walked value by value (sim/off_ascii.h).
+// tests/fuzz/regressions/off/ holds the files fuzz_off found.
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -146,4 +147,40 @@ TEST_CASE("ASCII OFF counts are read after the first line, where OpenMesh reads 
         const std::string path = sourcePath(std::string("tests/fuzz/regressions/off/") + name);
         CHECK_THROWS_AS(loadMesh(path), Error);
     }
+}
+
+TEST_CASE("ASCII OFF bodies are walked as OpenMesh reads them", "[off_files]") {
+    const std::string dir = scratchDir("off_files_ascii_body");
+    // The variants still load: normals (N), colours on vertex and face lines (C), extra values at
+    // the end of a vertex line, faces on one line.
+    for (const char* text :
+         {"NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n",
+          "COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2 1 1 1\n",
+          "OFF\n3 1 0\n0 0 0 0.5 0.5\n1 0 0\n0 1 0\n3 0 1 2\r\n",
+          "OFF\r\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2 3 0 2 3\n"}) {
+        INFO(text);
+        writeText(dir + "/ok.off", text);
+        CHECK(loadMesh(dir + "/ok.off").mesh.triangles.size() >= 1);
+    }
+    // A face count the file cannot back: 4e9 indices pushed one by one until memory ran out
+    // (tests/fuzz/regressions/off/face_count_in_body.off, found by fuzz_off).
+    CHECK(loadError(dir, "face_count.off", "OFF\n0 1 0\n4000000000 0 1 2\n") ==
+          "truncated: the file ends before index 4 of face 1 of 1");
+    CHECK(loadError(dir, "cut.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1") ==
+          "truncated: the file ends before index 3 of face 1 of 1");
+    CHECK(loadError(dir, "few_vertices.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n" + std::string(9, ' ')) ==
+          "truncated: the file ends before value 1 of vertex 3");
+    // A value `>>` cannot read fails the stream, and every later face repeats the last count.
+    CHECK(loadError(dir, "word.off", "OFF\n3 1 0\n0 0 x\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+          "value 3 of vertex 1 is 'x', not a number a float holds");
+    CHECK(loadError(dir, "hex.off", "OFF\n3 1 0\n0x1p3 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+          "value 1 of vertex 1 is '0x1p3', not a number a float holds");
+    CHECK(loadError(dir, "huge.off", "OFF\n3 1 0\n1e39 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+          "value 1 of vertex 1 is '1e39', not a number a float holds");
+    CHECK(loadError(dir, "negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n") ==
+          "the vertex count of face 1 of 1 is '-3', not a whole number");
+    CHECK(loadError(dir, "index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2.5\n") ==
+          "index 3 of face 1 of 1 is '2.5', not an integer");
+    CHECK(loadError(dir, "edges.off", "OFF\n3 1 x\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+          "expected the vertex, face and edge counts after 'OFF', got '3 1 x'");
 }
