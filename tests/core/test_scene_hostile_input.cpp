@@ -126,3 +126,21 @@ TEST_CASE("a key with control characters is escaped in the JSON pointer too", "[
     const std::string longKey = errorOf(R"({"volume": {")" + std::string(300, 'k') + R"(": 1}})");
     CHECK(longKey.rfind("smoke.json:/volume/" + std::string(80, 'k') + "...: ", 0) == 0);
 }
+
+TEST_CASE("a value quoted in a message has DEL escaped too", "[scene][json]") {
+    // JSON's escapes cover the control characters below 0x20; DEL (0x7f) was quoted raw
+    // (tests/fuzz/regressions/scene/string_with_del.json, found by fuzz_scene).
+    const std::string path =
+        eikon::test::sourcePath("tests/fuzz/regressions/scene/string_with_del.json");
+    try {
+        eikon::loadScene(path);
+        FAIL("no error");
+    } catch (const eikon::Error& e) {
+        INFO(e.what());
+        CHECK_FALSE(eikon::hasControlCharacter(e.what()));
+        CHECK(std::string(e.what()).find("got \"\\x7f\"") != std::string::npos);
+    }
+    CHECK(
+        errorOf(sceneWith(R"("output": {"directory": "\u007fout"})")) ==
+        R"(smoke.json:/output/directory: expected a string without control characters, got "\x7fout")");
+}
