@@ -43,6 +43,8 @@ cmake --build "$BUILD_DIR" -j "$(nproc)" --target "${TARGETS[@]}"
 
 export ASAN_SYMBOLIZER_PATH=/usr/lib/llvm-14/bin/llvm-symbolizer
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# Library leaks on error paths, each with its reason (tests/fuzz/lsan_suppressions.txt).
+export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan_suppressions.txt:print_suppressions=0"
 
 # Extra seeds that are not under tests/fuzz/corpus: the inputs of past findings
 # (tests/fuzz/regressions), the shipped scenes, and the small files of the shared data folder (big
