@@ -38,15 +38,27 @@ struct VdbReader::Impl : public openvdb::io::Archive {
 namespace {
 
 // Walks grid `gd`'s bytes as Archive::readGrid will read them (compression flags, metadata,
-// transform, tree of layout `layout`) and throws VdbFormatError on a size or flag OpenVDB would
-// trust. Instances have no tree of their own; their parent's is walked when it is read.
+// transform, tree) and throws VdbFormatError on a size or flag OpenVDB would trust. Instances
+// have no tree of their own; their parent's is walked when it is read.
 void checkGridBytes(std::istream& is, const openvdb::io::GridDescriptor& gd,
-                    const VdbReader::Entry& e, const VdbTreeLayout& layout) {
+                    const VdbReader::Entry& e) {
     gd.seekToGrid(is);
     if (e.endPos - e.gridPos < 4) throw VdbFormatError("the grid has no compression flags");
     std::uint32_t compression = 0;
     is.read(reinterpret_cast<char*>(&compression), sizeof(compression));
+    const std::streampos metaPos = is.tellg();
     checkVdbMetadata(is, e.endPos);
+    // Whether values are stored as half floats is what the grid's own metadata says
+    // (GridBase::saveFloatAsHalf, read after readMeta), not the descriptor's "_HalfFloat": a file
+    // where the two disagree had its tree walked at the wrong value size (found by fuzz_vdb).
+    // The metadata's bytes were checked just above, so OpenVDB reads them safely.
+    is.seekg(metaPos);
+    openvdb::MetaMap meta;
+    meta.readMeta(is);
+    const openvdb::Metadata::ConstPtr half = meta[openvdb::GridBase::META_SAVE_HALF_FLOAT];
+    VdbTreeLayout layout;
+    if (!vdbTreeLayoutFor(e.type, half && half->asBool(), layout))
+        throw VdbFormatError("grid type " + e.type + " has no known layout");
     // A transform is its map's type name, then a fixed-size record that OpenVDB reads safely;
     // the name's length is checked first (OpenVDB allocates it unread), then one is read to get
     // past it.
@@ -166,7 +178,7 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
     // OpenVDB reads what the walk below does not know without checking its sizes: a point grid's
     // Blosc block asked for 10^17 bytes (found by fuzz_vdb). Such grids are not read at all.
     VdbTreeLayout layout;
-    if (!vdbTreeLayoutFor(e.type, e.savedAsHalf, layout))
+    if (!vdbTreeLayoutFor(e.type, false, layout))
         throw UnsupportedGridError(path_, what + " has type " + printable(e.type) +
                                               ", whose bytes this reader cannot check (it reads "
                                               "float, double, integer, vector, bool and mask "
@@ -183,7 +195,7 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
         openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(e.type);
         grid->setSaveFloatAsHalf(e.savedAsHalf);
         impl_->stream.clear();
-        checkGridBytes(impl_->stream, gd, e, layout);
+        checkGridBytes(impl_->stream, gd, e);
         impl_->stream.clear();
         gd.seekToGrid(impl_->stream);
         Impl::readGridData(grid, gd, impl_->stream);

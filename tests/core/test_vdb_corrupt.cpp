@@ -262,3 +262,17 @@ TEST_CASE("Grids whose bytes the reader cannot check are skipped by name, not re
     FieldRegistry fields;
     CHECK_THROWS_AS(importVdb(path, fields), Error);
 }
+
+TEST_CASE("Corrupt VDB: the grid's metadata, not its descriptor, says whether values are half",
+          "[vdb][vdb-corrupt]") {
+    // OpenVDB reads the tree at the value size the grid's "is_saved_as_half_float" metadata says;
+    // the walk took the descriptor's "_HalfFloat" suffix. A file where the two disagree
+    // (tests/fuzz/regressions/vdb/half_flag_in_metadata.vdb, found by fuzz_vdb and minimized by
+    // libFuzzer) had its blocks walked at one size and read at the other: a Blosc byte count of
+    // 3.6e16 went to new[]. Now the walk follows the metadata, and the file is one error.
+    const std::string path =
+        test::sourcePath("tests/fuzz/regressions/vdb/half_flag_in_metadata.vdb");
+    const std::string message = errorOf(path);
+    CHECK(message.find("could not be read; the file is truncated or corrupt") != std::string::npos);
+    CHECK(message.find("bad_alloc") == std::string::npos);
+}
