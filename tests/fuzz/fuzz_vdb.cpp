@@ -1,12 +1,17 @@
 // The VDB reader, entered where the command line enters it: `eikon info cache.vdb` (inspectVdb,
 // then the text it prints) and `eikon render cache.vdb` or a scene's VDB source (importVdb into
 // the fields).
+#include <tbb/global_control.h>
+
 #include "core/field_registry.h"
 #include "core/vdb_import.h"
 #include "core/vdb_info.h"
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    // One thread: OpenVDB's reductions (active voxel count and bounds) start TBB workers whose
+    // spinning, under ASan and on a busy machine, cost more than the work; inputs are tiny.
+    static tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
     eikon::fuzz::quietLibraries();
     eikon::ensureOpenVdbInitialized();
     return 0;
