@@ -31,6 +31,21 @@ std::string errorOf(const std::string& text) {
     return {};
 }
 
+// The error loading the fuzzing regression input `name` (tests/fuzz/regressions/scene/), as
+// eikon render loads a scene; it must be one printable line.
+std::string regressionError(const std::string& name) {
+    const std::string path = eikon::test::sourcePath("tests/fuzz/regressions/scene/" + name);
+    try {
+        eikon::loadScene(path);
+    } catch (const eikon::Error& e) {
+        INFO(e.what());
+        CHECK_FALSE(eikon::hasControlCharacter(e.what()));
+        return std::string(e.what()).substr(path.size());
+    }
+    FAIL("expected an eikon::Error");
+    return {};
+}
+
 }  // namespace
 
 TEST_CASE("printable() escapes control characters and cuts long text", "[scene][json]") {
@@ -106,16 +121,7 @@ TEST_CASE("a key with control characters is escaped in the JSON pointer too", "[
     // tests/fuzz/regressions/scene/key_with_tab.json (found by fuzz_scene): the reason quoted the
     // key escaped, but the pointer in where() carried the raw tab; a line end there split the
     // one-line message.
-    const std::string path =
-        eikon::test::sourcePath("tests/fuzz/regressions/scene/key_with_tab.json");
-    try {
-        eikon::loadScene(path);
-        FAIL("no error");
-    } catch (const eikon::Error& e) {
-        INFO(e.what());
-        CHECK_FALSE(eikon::hasControlCharacter(e.what()));
-        CHECK(std::string(e.what()).rfind(path + ":/volume/\\t: unknown key '\\t'", 0) == 0);
-    }
+    CHECK(regressionError("key_with_tab.json").rfind(":/volume/\\t: unknown key '\\t'", 0) == 0);
 
     const std::string line = errorOf(sceneWith(R"("camera": {"look_\nat": [0, 0, 0]})"));
     INFO(line);
@@ -130,16 +136,7 @@ TEST_CASE("a key with control characters is escaped in the JSON pointer too", "[
 TEST_CASE("a value quoted in a message has DEL escaped too", "[scene][json]") {
     // JSON's escapes cover the control characters below 0x20; DEL (0x7f) was quoted raw
     // (tests/fuzz/regressions/scene/string_with_del.json, found by fuzz_scene).
-    const std::string path =
-        eikon::test::sourcePath("tests/fuzz/regressions/scene/string_with_del.json");
-    try {
-        eikon::loadScene(path);
-        FAIL("no error");
-    } catch (const eikon::Error& e) {
-        INFO(e.what());
-        CHECK_FALSE(eikon::hasControlCharacter(e.what()));
-        CHECK(std::string(e.what()).find("got \"\\x7f\"") != std::string::npos);
-    }
+    CHECK(regressionError("string_with_del.json").find("got \"\\x7f\"") != std::string::npos);
     CHECK(
         errorOf(sceneWith(R"("output": {"directory": "\u007fout"})")) ==
         R"(smoke.json:/output/directory: expected a string without control characters, got "\x7fout")");

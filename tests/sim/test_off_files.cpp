@@ -162,25 +162,35 @@ TEST_CASE("ASCII OFF bodies are walked as OpenMesh reads them", "[off_files]") {
         writeText(dir + "/ok.off", text);
         CHECK(loadMesh(dir + "/ok.off").mesh.triangles.size() >= 1);
     }
-    // A face count the file cannot back: 4e9 indices pushed one by one until memory ran out
-    // (tests/fuzz/regressions/off/face_count_in_body.off, found by fuzz_off).
-    CHECK(loadError(dir, "face_count.off", "OFF\n0 1 0\n4000000000 0 1 2\n") ==
-          "truncated: the file ends before index 4 of face 1 of 1");
-    CHECK(loadError(dir, "cut.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1") ==
-          "truncated: the file ends before index 3 of face 1 of 1");
-    CHECK(loadError(dir, "few_vertices.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n" + std::string(9, ' ')) ==
-          "truncated: the file ends before value 1 of vertex 3");
-    // A value `>>` cannot read fails the stream, and every later face repeats the last count.
-    CHECK(loadError(dir, "word.off", "OFF\n3 1 0\n0 0 x\n1 0 0\n0 1 0\n3 0 1 2\n") ==
-          "value 3 of vertex 1 is 'x', not a number a float holds");
-    CHECK(loadError(dir, "hex.off", "OFF\n3 1 0\n0x1p3 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
-          "value 1 of vertex 1 is '0x1p3', not a number a float holds");
-    CHECK(loadError(dir, "huge.off", "OFF\n3 1 0\n1e39 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
-          "value 1 of vertex 1 is '1e39', not a number a float holds");
-    CHECK(loadError(dir, "negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n") ==
-          "the vertex count of face 1 of 1 is '-3', not a whole number");
-    CHECK(loadError(dir, "index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2.5\n") ==
-          "index 3 of face 1 of 1 is '2.5', not an integer");
-    CHECK(loadError(dir, "edges.off", "OFF\n3 1 x\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
-          "expected the vertex, face and edge counts after 'OFF', got '3 1 x'");
+    const struct {
+        const char* name;
+        std::string text;
+        const char* error;
+    } cases[] = {
+        // A face count the file cannot back: 4e9 indices pushed one by one until memory ran out
+        // (tests/fuzz/regressions/off/face_count_in_body.off, found by fuzz_off).
+        {"face_count.off", "OFF\n0 1 0\n4000000000 0 1 2\n",
+         "truncated: the file ends before index 4 of face 1 of 1"},
+        {"cut.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1",
+         "truncated: the file ends before index 3 of face 1 of 1"},
+        {"few_vertices.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n" + std::string(9, ' '),
+         "truncated: the file ends before value 1 of vertex 3"},
+        // A value `>>` cannot read fails the stream, and every later face repeats the last count.
+        {"word.off", "OFF\n3 1 0\n0 0 x\n1 0 0\n0 1 0\n3 0 1 2\n",
+         "value 3 of vertex 1 is 'x', not a number a float holds"},
+        {"hex.off", "OFF\n3 1 0\n0x1p3 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+         "value 1 of vertex 1 is '0x1p3', not a number a float holds"},
+        {"huge.off", "OFF\n3 1 0\n1e39 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+         "value 1 of vertex 1 is '1e39', not a number a float holds"},
+        {"negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n",
+         "the vertex count of face 1 of 1 is '-3', not a whole number"},
+        {"index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2.5\n",
+         "index 3 of face 1 of 1 is '2.5', not an integer"},
+        {"edges.off", "OFF\n3 1 x\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+         "expected the vertex, face and edge counts after 'OFF', got '3 1 x'"},
+    };
+    for (const auto& c : cases) {
+        INFO(c.name);
+        CHECK(loadError(dir, c.name, c.text) == c.error);
+    }
 }
