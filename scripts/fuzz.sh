@@ -9,6 +9,8 @@
 #   --runs N     run each target for N inputs instead (the long runs of RELIABILITY.md)
 #   --target T   only this target (fuzz_vdb, fuzz_ply, fuzz_obj, fuzz_off, fuzz_stl, fuzz_scene);
 #                may repeat
+#   --resume     start from the working corpus the last run left, not from the seeds (a long run
+#                continued after a fix)
 # The seed is fixed (-seed=1), so a run is repeatable on the same build. The working corpus and
 # findings live under build-fuzz/fuzz/<target>/, never in the repository; a finding goes into the
 # normal suite by hand (tests/fuzz/regressions/ and a Catch2 case, see RELIABILITY.md).
@@ -18,11 +20,13 @@ cd "$(dirname "$0")/.."
 ALL_TARGETS=(fuzz_vdb fuzz_ply fuzz_obj fuzz_off fuzz_stl fuzz_scene)
 LIMIT=(-max_total_time=60)
 TARGETS=()
+RESUME=0
 while [ $# -gt 0 ]; do
     case "$1" in
         --seconds) LIMIT=(-max_total_time="$2"); shift 2 ;;
         --runs) LIMIT=(-runs="$2"); shift 2 ;;
         --target) TARGETS+=("$2"); shift 2 ;;
+        --resume) RESUME=1; shift ;;
         *) echo "fuzz.sh: unknown argument '$1' (see the usage at the top of the script)" >&2; exit 2 ;;
     esac
 done
@@ -67,10 +71,15 @@ failed=0
 for target in "${TARGETS[@]}"; do
     name="${target#fuzz_}"
     work="$BUILD_DIR/fuzz/$target"
-    rm -rf "$work"
-    mkdir -p "$work/corpus" "$work/findings"
-    cp tests/fuzz/corpus/"$name"/* "$work/corpus/"
-    extra_seeds "$target" "$work/corpus"
+    if [ "$RESUME" = 1 ] && [ -d "$work/corpus" ]; then
+        rm -rf "$work/findings" "$work/log.txt"
+        mkdir -p "$work/findings"
+    else
+        rm -rf "$work"
+        mkdir -p "$work/corpus" "$work/findings"
+        cp tests/fuzz/corpus/"$name"/* "$work/corpus/"
+        extra_seeds "$target" "$work/corpus"
+    fi
     seeds=$(find "$work/corpus" -type f | wc -l)
     args=(-seed=1 -timeout=20 -rss_limit_mb=2048 "${LIMIT[@]}" -print_final_stats=1
           -artifact_prefix="$work/findings/")
@@ -84,7 +93,7 @@ for target in "${TARGETS[@]}"; do
     field() { sed -nE "s/.* $1: ([0-9]+).*/\1/p" <<<"$status"; }
     stat() { sed -nE "s/^stat::$1: *([0-9]+).*/\1/p" "$work/log.txt" | tail -1; }
     findings=$(find "$work/findings" -type f | wc -l)
-    printf '%-10s  %9s execs  %6s/s  cov %5s  ft %6s  corpus %4s (from %s seeds)  rss %4s MB  findings %s\n' \
+    printf '%-10s  %9s execs  %6s/s  cov %5s  ft %6s  corpus %4s (started from %s)  rss %4s MB  findings %s\n' \
         "$target" "$(stat number_of_executed_units)" "$(stat average_exec_per_sec)" "$(field cov)" \
         "$(field ft)" "$(field corp)" "$seeds" "$(stat peak_rss_mb)" "$findings"
     if [ "$rc" -ne 0 ] || [ "$findings" -gt 0 ]; then
