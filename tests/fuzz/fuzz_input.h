@@ -6,8 +6,8 @@
 // The expected outcomes are a result or an eikon::Error whose message is one printable line.
 // Anything else is a finding and aborts, so libFuzzer saves the input: another exception type
 // escaping, an error message or warning with a control character in it (it would break the
-// one-line promise of core/error.h), a crash or a sanitizer report, and, through libFuzzer's
-// own -timeout and -rss_limit_mb, a hang or a runaway allocation.
+// one-line promise of core/error.h) or a report line with one, a crash or a sanitizer report, and,
+// through libFuzzer's own -timeout and -rss_limit_mb, a hang or a runaway allocation.
 #include <unistd.h>
 
 #include <cstdint>
@@ -34,6 +34,16 @@ namespace eikon::fuzz {
 
 inline void expectOneLine(const std::string& kind, const std::string& text) {
     if (hasControlCharacter(text)) finding(kind + " holds a control character: " + printable(text));
+}
+
+// A report of several lines (`eikon info`'s text): each line printable.
+inline void expectPrintableLines(const std::string& kind, const std::string& text) {
+    for (std::size_t start = 0; start < text.size();) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        expectOneLine(kind, text.substr(start, end - start));
+        start = end + 1;
+    }
 }
 
 // The file every input of this process is written to, `extension` included (readers choose by

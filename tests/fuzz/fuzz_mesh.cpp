@@ -17,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::writeInput(path, data, size);
     fuzz::readExpectingErrors([&] {
         const LoadedMesh loaded = loadMesh(path);
-        formatMeshInfo(path, loaded, checkMesh(loaded));
+        fuzz::expectPrintableLines("eikon info's text",
+                                   formatMeshInfo(path, loaded, checkMesh(loaded)));
     });
     return 0;
 }

@@ -21,7 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using namespace eikon;
     const std::string& path = fuzz::inputPath(".vdb");
     fuzz::writeInput(path, data, size);
-    fuzz::readExpectingErrors([&] { formatVdbInfo(inspectVdb(path)); });
+    fuzz::readExpectingErrors(
+        [&] { fuzz::expectPrintableLines("eikon info's text", formatVdbInfo(inspectVdb(path))); });
     fuzz::readExpectingErrors([&] {
         FieldRegistry fields;
         importVdb(path, fields);
