@@ -13,6 +13,7 @@
 
 #include "apps/commands.h"
 #include "apps/frame_files.h"
+#include "apps/memory_limit_option.h"
 #include "core/error.h"
 #include "core/field_registry.h"
 #include "core/scene.h"
@@ -160,6 +161,7 @@ int runSimulate(const SimulateOptions& o) {
 void addSimulateCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand(
         "simulate", "Run a scene's smoke simulation and write one VDB file per frame");
+    addMemoryLimitOption(cmd);
     auto o = std::make_shared<SimulateOptions>();  // CLI11 binds by reference
     cmd->add_option("scene", o->scene, "scene.json with a \"simulation\" section")->required();
     cmd->add_option("-o,--output", o->outputDir,

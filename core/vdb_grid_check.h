@@ -37,10 +37,19 @@ bool vdbTreeLayoutFor(const std::string& type, bool savedAsHalf, VdbTreeLayout& 
 // ending no later than byte `end`; returns the offset just past it. Leaves the stream there.
 std::int64_t checkVdbMetadata(std::istream& is, std::int64_t end);
 
+// The nodes a tree's topology declares, counted by the walk before OpenVDB allocates them.
+struct VdbTreeNodeCounts {
+    std::uint64_t leaves = 0;
+    std::uint64_t internal[2] = {0, 0};  // 16^3 and 32^3 internal nodes
+    // What OpenVDB will allocate for them (an upper bound; core/memory_limit.h).
+    double bytes(const VdbTreeLayout& layout) const;
+};
+
 // Checks a tree's topology and buffers (Tree::readTopology then Tree::readBuffers, file format
 // >= 222) starting at the stream's position; `compression` is the grid's io::COMPRESS_* flags.
-// Returns the offset just past the last buffer, which is at most `end`.
+// Returns the offset just past the last buffer, which is at most `end`; `counts`, when given,
+// receives the nodes the topology declares.
 std::int64_t checkVdbTree(std::istream& is, std::int64_t end, const VdbTreeLayout& layout,
-                          std::uint32_t compression);
+                          std::uint32_t compression, VdbTreeNodeCounts* counts = nullptr);
 
 }  // namespace eikon

@@ -6,6 +6,8 @@
 #include <openvdb/io/GridDescriptor.h>
 
 #include "core/error.h"
+#include "core/memory_limit.h"
+#include "core/printable.h"
 #include "core/vdb_grid_check.h"
 #include "core/vdb_import.h"
 
@@ -41,7 +43,7 @@ namespace {
 // the walk does not know, instances (no tree of their own) and files older than format 222 are
 // left to OpenVDB as before.
 void checkGridBytes(std::istream& is, const openvdb::io::GridDescriptor& gd,
-                    const VdbReader::Entry& e) {
+                    const VdbReader::Entry& e, const std::string& path) {
     if (openvdb::io::getFormatVersion(is) < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
         return;
     gd.seekToGrid(is);
@@ -54,7 +56,12 @@ void checkGridBytes(std::istream& is, const openvdb::io::GridDescriptor& gd,
     transform.read(is);
     VdbTreeLayout layout;
     if (gd.isInstance() || !vdbTreeLayoutFor(e.type, e.savedAsHalf, layout)) return;
-    checkVdbTree(is, e.endPos, layout, compression);
+    VdbTreeNodeCounts counts;
+    checkVdbTree(is, e.endPos, layout, compression, &counts);
+    // A few megabytes of well-compressed leaves can expand to more than the machine holds.
+    checkMemory(path, counts.bytes(layout),
+                "grid '" + printable(e.name) + "' (" + std::to_string(counts.leaves) + " leaves)",
+                "resample it coarser in the tool that wrote it");
 }
 
 std::string truncatedOrCorrupt(const std::string& what, const std::string& detail) {
@@ -151,7 +158,7 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
         openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(e.type);
         grid->setSaveFloatAsHalf(e.savedAsHalf);
         impl_->stream.clear();
-        checkGridBytes(impl_->stream, gd, e);
+        checkGridBytes(impl_->stream, gd, e, path_);
         impl_->stream.clear();
         gd.seekToGrid(impl_->stream);
         Impl::readGridData(grid, gd, impl_->stream);
