@@ -113,9 +113,9 @@ TEST_CASE("eikon render and simulate on fuzzed scenes: one line naming the point
         INFO(c.name);
         writeText(dir + "/" + c.name, c.text);
         const std::string backend = std::string(c.command) == "render" ? " --backend cpu" : "";
-        const RunResult r = runEikon(
-            std::string(c.command) + " " + quoted(dir + "/" + c.name) + backend, dir,
-                                     "EIKON_MEMORY_LIMIT=16G timeout 60");
+        const RunResult r =
+            runEikon(std::string(c.command) + " " + quoted(dir + "/" + c.name) + backend, dir,
+                     "EIKON_MEMORY_LIMIT=16G timeout 60");
         // The huge mesh fails when voxelized, after `render` has said on stdout which backend
         // it runs ("CPU twin (TBB), as asked"); stderr must still be the one line.
         RunResult checked = r;
