@@ -67,6 +67,17 @@ vec3 transmittanceToward(vec3 x, vec3 toLight, float maxDistance) {
 }
 
 // Unshadowed irradiance from light l at x; also the unit direction toward it and its distance.
+// A spot light's falloff along unit direction d (travelling away from the light): 1 inside the
+// inner cone, 0 outside the outer, smoothstep between, in the versine v = 1 − cos θ =
+// |d − axis|² / 2 (exact for small angles, where 1 − dot(d, axis) loses every digit).
+// smoothstep(cos θo, cos θi, cos θ) = 1 − smoothstep(vi, vo, v): the same falloff, and its solid
+// angle ∫ falloff dΩ = 2π ∫ falloff dv = π (vo + vi).
+float spotFalloff(GpuLight light, vec3 d) {
+    const vec3 off = d - vec3(light.direction);
+    const float v = 0.5f * dot(off, off);
+    return 1.0f - smoothstep(lightVersineInner(light), lightVersineOuter(light), v);
+}
+
 vec3 lightIrradiance(int l, vec3 x, EK_OUT(vec3) toLight, EK_OUT(float) lightDistance) {
     const GpuLight light = params.lights[l];
     const int type = lightType(light);
@@ -80,9 +91,6 @@ vec3 lightIrradiance(int l, vec3 x, EK_OUT(vec3) toLight, EK_OUT(float) lightDis
     lightDistance = max(length(d), 1e-6f);
     toLight = d / lightDistance;
     float falloff = 1.0f / (lightDistance * lightDistance);
-    if (type == EK_LIGHT_SPOT) {
-        const float c = dot(-toLight, vec3(light.direction));
-        falloff *= smoothstep(lightCosOuter(light), lightCosInner(light), c);
-    }
+    if (type == EK_LIGHT_SPOT) falloff *= spotFalloff(light, -toLight);
     return radiance * falloff;
 }
