@@ -176,7 +176,7 @@ int runSimulate(const SimulateOptions& o) {
         if (ec) throw Error(directory, "cannot create the cache folder: " + ec.message());
         removeStalePartials(directory, spec.cacheName, written.frameStart, written.frameEnd, "vdb");
         domains.push_back({spec, directory, sim::smokeSolverFrom(scene, d),
-                           cacheRunMarkerPath(directory, spec.cacheName)});
+                           cacheRunMarkerPath(directory, spec.cacheName), std::nullopt});
         const glm::ivec3 n = spec.resolution;
         std::printf("smoke%s%s %dx%dx%d, voxel %g, %g fps, frames %d-%d -> %s\n",
                     spec.label.empty() ? "" : " ", spec.label.c_str(), n.x, n.y, n.z,
