@@ -14,6 +14,7 @@
 #include "core/scene.h"
 #include "core/vdb_export.h"
 #include "core/vdb_import.h"
+#include "support/scene_builders.h"
 #include "support/test_paths.h"
 
 using namespace eikon;
@@ -29,22 +30,13 @@ struct LimitScope {
 };
 
 SourceSpec sphere(float radius, float voxel, float falloff = 0.0f) {
-    SourceSpec s;
-    s.type = SourceType::Sphere;
-    s.radius = radius;
-    s.center = glm::vec3(0.1f, -0.2f, 0.05f);
-    s.falloff = falloff;
-    s.voxelSize = voxel;
-    return s;
+    return eikon::test::sphereSource("density", glm::vec3(0.1f, -0.2f, 0.05f), radius, 1.0f,
+                                     falloff, voxel);
 }
 
 SourceSpec box(glm::vec3 lo, glm::vec3 hi, float voxel, float corner = 0.0f) {
-    SourceSpec s;
-    s.type = SourceType::Box;
-    s.boxMin = lo;
-    s.boxMax = hi;
+    SourceSpec s = eikon::test::boxSource("density", lo, hi, 1.0f, 0.0f, voxel);
     s.cornerRadius = corner;
-    s.voxelSize = voxel;
     return s;
 }
 
