@@ -1,0 +1,94 @@
+#include "render/gl_objects.h"
+
+#include <epoxy/gl.h>
+
+namespace eikon {
+namespace {
+
+// Names beyond the next one handed out that are asked about too, for drivers that reuse freed
+// names (the next one is then the lowest free name, and live ones may lie above it).
+constexpr GLuint kBeyondNext = 1024;
+
+template <typename Generate, typename Delete, typename IsName>
+int countNames(Generate generate, Delete remove, IsName isName) {
+    GLuint next = 0;
+    generate(&next);
+    remove(next);
+    int live = 0;
+    for (GLuint name = 1; name < next + kBeyondNext; ++name)
+        if (name != next && isName(name)) ++live;
+    return live;
+}
+
+int countTextures() {
+    return countNames([](GLuint* n) { glGenTextures(1, n); },
+                      [](GLuint n) { glDeleteTextures(1, &n); },
+                      [](GLuint n) { return glIsTexture(n) == GL_TRUE; });
+}
+
+int countBuffers() {
+    return countNames([](GLuint* n) { glGenBuffers(1, n); },
+                      [](GLuint n) { glDeleteBuffers(1, &n); },
+                      [](GLuint n) { return glIsBuffer(n) == GL_TRUE; });
+}
+
+int countQueries() {
+    return countNames([](GLuint* n) { glGenQueries(1, n); },
+                      [](GLuint n) { glDeleteQueries(1, &n); },
+                      [](GLuint n) { return glIsQuery(n) == GL_TRUE; });
+}
+
+int countFramebuffers() {
+    return countNames([](GLuint* n) { glGenFramebuffers(1, n); },
+                      [](GLuint n) { glDeleteFramebuffers(1, &n); },
+                      [](GLuint n) { return glIsFramebuffer(n) == GL_TRUE; });
+}
+
+int countVertexArrays() {
+    return countNames([](GLuint* n) { glGenVertexArrays(1, n); },
+                      [](GLuint n) { glDeleteVertexArrays(1, &n); },
+                      [](GLuint n) { return glIsVertexArray(n) == GL_TRUE; });
+}
+
+int countSamplers() {
+    return countNames([](GLuint* n) { glGenSamplers(1, n); },
+                      [](GLuint n) { glDeleteSamplers(1, &n); },
+                      [](GLuint n) { return glIsSampler(n) == GL_TRUE; });
+}
+
+}  // namespace
+
+bool GlObjectCounts::operator==(const GlObjectCounts& o) const {
+    return textures == o.textures && buffers == o.buffers && programs == o.programs &&
+           shaders == o.shaders && queries == o.queries && framebuffers == o.framebuffers &&
+           vertexArrays == o.vertexArrays && samplers == o.samplers;
+}
+
+std::string GlObjectCounts::describe() const {
+    return "textures " + std::to_string(textures) + ", buffers " + std::to_string(buffers) +
+           ", programs " + std::to_string(programs) + ", shaders " + std::to_string(shaders) +
+           ", queries " + std::to_string(queries) + ", framebuffers " +
+           std::to_string(framebuffers) + ", vertex arrays " + std::to_string(vertexArrays) +
+           ", samplers " + std::to_string(samplers);
+}
+
+GlObjectCounts countGlObjects() {
+    GlObjectCounts c;
+    c.textures = countTextures();
+    c.buffers = countBuffers();
+    c.queries = countQueries();
+    c.framebuffers = countFramebuffers();
+    c.vertexArrays = countVertexArrays();
+    c.samplers = countSamplers();
+    // Programs and shaders share one namespace: a probe program tells where it stands.
+    const GLuint next = glCreateProgram();
+    glDeleteProgram(next);
+    for (GLuint name = 1; name < next + kBeyondNext; ++name) {
+        if (name == next) continue;
+        if (glIsProgram(name) == GL_TRUE) ++c.programs;
+        if (glIsShader(name) == GL_TRUE) ++c.shaders;
+    }
+    return c;
+}
+
+}  // namespace eikon
