@@ -90,3 +90,22 @@ TEST_CASE("a live run on the GPU makes no GL object or field per frame", "[gpu][
         CHECK(renderer.fields().names().size() == fields);
     }
 }
+
+TEST_CASE("the GL object count sees objects made and deleted", "[gpu][soak]") {
+    std::unique_ptr<GlContext> gl = createHeadlessContext();
+    const GlObjectCounts before = countGlObjects();
+    Scene scene = parseScene(liveScene("light_volumes"), "live.json");
+    {
+        FrameRenderer renderer(scene, Backend::Gpu, gl.get());
+        renderer.render(frameInputs(scene, 1));
+        const GlObjectCounts during = countGlObjects();
+        INFO("before: " << before.describe() << "\nduring: " << during.describe());
+        CHECK(during.textures > before.textures);
+        CHECK(during.buffers > before.buffers);
+        CHECK(during.programs > before.programs);
+    }
+    // The renderer gone, every GL object it made is gone with it.
+    const GlObjectCounts after = countGlObjects();
+    INFO("before: " << before.describe() << "\nafter: " << after.describe());
+    CHECK(after == before);
+}
