@@ -109,3 +109,21 @@ TEST_CASE("the GL object count sees objects made and deleted", "[gpu][soak]") {
     INFO("before: " << before.describe() << "\nafter: " << after.describe());
     CHECK(after == before);
 }
+
+TEST_CASE("a renderer whose stage times nobody takes keeps a bounded number of GL queries",
+          "[gpu][soak]") {
+    // `eikon render` and `eikon view` take the stage times every frame; a program that does not
+    // (a test, a batch loop) must not make a timer query per stage per frame for ever.
+    const Scene scene = parseScene(liveScene("light_volumes"), "live.json");
+    FrameRenderer renderer(scene, Backend::Gpu);
+    for (int frame = 1; frame <= 20; ++frame) renderer.render(frameInputs(scene, frame));
+    const GlObjectCounts warm = countGlObjects();
+    for (int frame = 21; frame <= 60; ++frame) renderer.render(frameInputs(scene, frame));
+    const GlObjectCounts after = countGlObjects();
+    INFO("after 20 frames: " << warm.describe() << "\nafter 60: " << after.describe());
+    CHECK(after == warm);
+    // The times are still summed, over every frame since the last take.
+    const std::vector<StageTime> stats = renderer.takeStats();
+    REQUIRE(!stats.empty());
+    CHECK(stats.front().calls == 60);
+}
