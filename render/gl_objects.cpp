@@ -9,52 +9,30 @@ namespace {
 // names (the next one is then the lowest free name, and live ones may lie above it).
 constexpr GLuint kBeyondNext = 1024;
 
-template <typename Generate, typename Delete, typename IsName>
-int countNames(Generate generate, Delete remove, IsName isName) {
-    GLuint next = 0;
-    generate(&next);
-    remove(next);
-    int live = 0;
-    for (GLuint name = 1; name < next + kBeyondNext; ++name)
-        if (name != next && isName(name)) ++live;
-    return live;
-}
+// One kind of GL object: where its count goes, and how to make, delete and recognise a name.
+struct NameKind {
+    int GlObjectCounts::*count;
+    void (*generate)(GLuint*);
+    void (*remove)(GLuint);
+    bool (*isName)(GLuint);
+};
 
-int countTextures() {
-    return countNames([](GLuint* n) { glGenTextures(1, n); },
-                      [](GLuint n) { glDeleteTextures(1, &n); },
-                      [](GLuint n) { return glIsTexture(n) == GL_TRUE; });
-}
-
-int countBuffers() {
-    return countNames([](GLuint* n) { glGenBuffers(1, n); },
-                      [](GLuint n) { glDeleteBuffers(1, &n); },
-                      [](GLuint n) { return glIsBuffer(n) == GL_TRUE; });
-}
-
-int countQueries() {
-    return countNames([](GLuint* n) { glGenQueries(1, n); },
-                      [](GLuint n) { glDeleteQueries(1, &n); },
-                      [](GLuint n) { return glIsQuery(n) == GL_TRUE; });
-}
-
-int countFramebuffers() {
-    return countNames([](GLuint* n) { glGenFramebuffers(1, n); },
-                      [](GLuint n) { glDeleteFramebuffers(1, &n); },
-                      [](GLuint n) { return glIsFramebuffer(n) == GL_TRUE; });
-}
-
-int countVertexArrays() {
-    return countNames([](GLuint* n) { glGenVertexArrays(1, n); },
-                      [](GLuint n) { glDeleteVertexArrays(1, &n); },
-                      [](GLuint n) { return glIsVertexArray(n) == GL_TRUE; });
-}
-
-int countSamplers() {
-    return countNames([](GLuint* n) { glGenSamplers(1, n); },
-                      [](GLuint n) { glDeleteSamplers(1, &n); },
-                      [](GLuint n) { return glIsSampler(n) == GL_TRUE; });
-}
+const NameKind kKinds[] = {
+    {&GlObjectCounts::textures, [](GLuint* n) { glGenTextures(1, n); },
+     [](GLuint n) { glDeleteTextures(1, &n); }, [](GLuint n) { return glIsTexture(n) == GL_TRUE; }},
+    {&GlObjectCounts::buffers, [](GLuint* n) { glGenBuffers(1, n); },
+     [](GLuint n) { glDeleteBuffers(1, &n); }, [](GLuint n) { return glIsBuffer(n) == GL_TRUE; }},
+    {&GlObjectCounts::queries, [](GLuint* n) { glGenQueries(1, n); },
+     [](GLuint n) { glDeleteQueries(1, &n); }, [](GLuint n) { return glIsQuery(n) == GL_TRUE; }},
+    {&GlObjectCounts::framebuffers, [](GLuint* n) { glGenFramebuffers(1, n); },
+     [](GLuint n) { glDeleteFramebuffers(1, &n); },
+     [](GLuint n) { return glIsFramebuffer(n) == GL_TRUE; }},
+    {&GlObjectCounts::vertexArrays, [](GLuint* n) { glGenVertexArrays(1, n); },
+     [](GLuint n) { glDeleteVertexArrays(1, &n); },
+     [](GLuint n) { return glIsVertexArray(n) == GL_TRUE; }},
+    {&GlObjectCounts::samplers, [](GLuint* n) { glGenSamplers(1, n); },
+     [](GLuint n) { glDeleteSamplers(1, &n); }, [](GLuint n) { return glIsSampler(n) == GL_TRUE; }},
+};
 
 }  // namespace
 
@@ -74,12 +52,13 @@ std::string GlObjectCounts::describe() const {
 
 GlObjectCounts countGlObjects() {
     GlObjectCounts c;
-    c.textures = countTextures();
-    c.buffers = countBuffers();
-    c.queries = countQueries();
-    c.framebuffers = countFramebuffers();
-    c.vertexArrays = countVertexArrays();
-    c.samplers = countSamplers();
+    for (const NameKind& kind : kKinds) {
+        GLuint next = 0;
+        kind.generate(&next);
+        kind.remove(next);
+        for (GLuint name = 1; name < next + kBeyondNext; ++name)
+            if (name != next && kind.isName(name)) ++(c.*kind.count);
+    }
     // Programs and shaders share one namespace: a probe program tells where it stands.
     const GLuint next = glCreateProgram();
     glDeleteProgram(next);
