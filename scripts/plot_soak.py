@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Plots `eikon bench soak`'s CSV: memory against frame (VmRSS, RssAnon, the heap malloc has
-handed out), with the RSS at the warm-up and the bound above it, and ms per frame below.
+handed out), with the RSS at the warm-up and the bound above it; below, the smoke's total density
+(does the scene stay a plume, or fill up, or empty?) and ms per frame.
 
 Usage: /usr/bin/python3 scripts/plot_soak.py CSV [PNG] [--warmup 100] [--bound-mib 16]
   (PNG defaults to CSV's name; --warmup and --bound-mib as the bench was run)
@@ -34,8 +35,8 @@ def main():
     def mib(key):
         return [int(r[key]) / 1024.0 for r in rows]
 
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True,
-                                      gridspec_kw={"height_ratios": [3, 1]})
+    fig, (top, middle, bottom) = plt.subplots(3, 1, figsize=(9, 8), sharex=True,
+                                              gridspec_kw={"height_ratios": [3, 1, 1]})
     top.plot(frame, mib("rss_kib"), color="tab:blue", label="VmRSS")
     top.plot(frame, mib("rss_anon_kib"), color="tab:cyan", label="RssAnon")
     top.plot(frame, mib("heap_in_use_kib"), color="tab:green", label="heap in use (malloc)")
@@ -54,6 +55,10 @@ def main():
     top.set_title(title)
     top.grid(True, alpha=0.3)
     top.legend(fontsize=8, loc="lower right")
+    middle.plot(frame, [float(r["density_total"]) for r in rows], color="tab:gray")
+    middle.set_ylim(bottom=0)
+    middle.set_ylabel("∫ density dV")
+    middle.grid(True, alpha=0.3)
     # The first sample holds the start-up (shader compilation): left out of the time panel.
     bottom.plot(frame[1:], [float(r["ms_per_frame"]) for r in rows[1:]], color="tab:red")
     bottom.set_ylim(bottom=0)
