@@ -13,6 +13,11 @@
 // pass it in 40 frames), while leaving room for what allocators legitimately do after a warm-up
 // (glibc's per-thread arenas fragmenting and settling, Mesa's caches) that is no leak. Smaller
 // leaks show in the slope the summary prints and in the heap-in-use column.
+//
+// Built with AddressSanitizer (the CI's second pass), RSS is printed but not judged: ASan holds
+// freed blocks in its quarantine (256 MiB by default) before reusing them, so RSS climbs by
+// hundreds of MiB over the first thousands of frames with no leak at all. The GL objects are
+// still judged there.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -135,6 +140,12 @@ struct StageTotal {
     double ms = 0.0;
 };
 
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kRssJudged = false;
+#else
+constexpr bool kRssJudged = true;
+#endif
+
 // The summary, from the samples so far; throws eikon::Error when the verdict fails.
 void printSummary(const SoakOptions& o, const std::vector<Sample>& samples, int framesDone,
                   double wallS, double loopMs, const std::vector<StageTotal>& stages) {
@@ -188,12 +199,18 @@ void printSummary(const SoakOptions& o, const std::vector<Sample>& samples, int 
         std::printf("# GL objects alive: %d after the warm-up, %d at the end (%s)\n", w.gl->total(),
                     last.gl->total(), last.gl->describe().c_str());
     }
-    const bool pass = maxGrowth <= o.boundMib && !glGrew;
-    std::printf("# verdict: %s (RSS growth after the warm-up %.2f MiB, bound %.1f MiB%s)\n",
-                pass ? "PASS" : "FAIL", maxGrowth, o.boundMib,
-                w.gl ? glGrew ? "; GL objects grew" : "; GL objects constant" : "");
+    const bool rssOver = kRssJudged && maxGrowth > o.boundMib;
+    const char* glText = w.gl ? glGrew ? "; GL objects grew" : "; GL objects constant" : "";
+    if (kRssJudged)
+        std::printf("# verdict: %s (RSS growth after the warm-up %.2f MiB, bound %.1f MiB%s)\n",
+                    !rssOver && !glGrew ? "PASS" : "FAIL", maxGrowth, o.boundMib, glText);
+    else
+        std::printf(
+            "# verdict: %s (RSS not judged: built with AddressSanitizer, whose quarantine holds "
+            "freed memory%s)\n",
+            glGrew ? "FAIL" : "PASS", glText);
     std::fflush(stdout);
-    if (maxGrowth > o.boundMib) {
+    if (rssOver) {
         char reason[160];
         std::snprintf(reason, sizeof reason,
                       "RSS grew %.2f MiB after the warm-up (frame %d), over the %.1f MiB bound",
