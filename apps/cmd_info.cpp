@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/memory_limit_option.h"
 #include "core/vdb_info.h"
 #include "sim/mesh_check.h"
 #include "sim/mesh_info.h"
@@ -12,6 +13,7 @@ namespace eikon::app {
 void addInfoCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand(
         "info", "Print the grids of a VDB file, or the counts, bounds and problems of a mesh");
+    addMemoryLimitOption(cmd);
     auto path = std::make_shared<std::string>();  // CLI11 binds by reference
     cmd->add_option("file", *path, "VDB file, or mesh (.obj, .off, .ply, .stl)")->required();
     cmd->callback([path, &exitCode] {

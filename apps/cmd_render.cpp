@@ -10,6 +10,7 @@
 #include "apps/backend_choice.h"
 #include "apps/commands.h"
 #include "apps/frame_files.h"
+#include "apps/memory_limit_option.h"
 #include "apps/scene_driver.h"
 #include "apps/scene_input.h"
 #include "core/error.h"
@@ -146,6 +147,7 @@ int runRender(const RenderOptions& o) {
 
 void addRenderCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand("render", "Render a scene file or a VDB cache to images");
+    addMemoryLimitOption(cmd);
     auto o = std::make_shared<RenderOptions>();
     cmd->add_option("input", o->input, "scene.json or cache.vdb")->required();
     cmd->add_option("-o,--output", o->outputDir, "output folder (default: the scene's)");

@@ -8,13 +8,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "apps/commands.h"
 #include "apps/frame_files.h"
+#include "apps/memory_limit_option.h"
+#include "core/cache_run_marker.h"
 #include "core/error.h"
 #include "core/field_registry.h"
+#include "core/log.h"
 #include "core/scene.h"
 #include "core/vdb_export.h"
 #include "render/light_transport_registry.h"
@@ -32,12 +36,55 @@ struct SimulateOptions {
     std::string frames;
 };
 
-// One smoke domain being simulated: its solver and where its cache goes.
+// One smoke domain being simulated: its solver, where its cache goes, and the mark that says a
+// run is writing it (core/cache_run_marker.h).
 struct Domain {
     const SmokeSimulationSpec& spec;
     std::string directory;
     sim::SmokeSolver solver;
+    std::string markPath;
+    std::optional<CacheRunMarker> stopped;  // the mark a run killed midway left, if any
 };
+
+// Before this run marks its caches (core/cache_run_marker.h): another run still writing one is
+// an error (two runs would interleave their frames); a mark left by a run that stopped midway is
+// reported, as this run rewrites the frames it names.
+void checkCacheRuns(std::vector<Domain>& domains, const TimeSettings& written) {
+    for (Domain& domain : domains) {
+        const auto previous = readCacheRunMarker(domain.markPath);
+        if (!previous) continue;
+        const std::string cache =
+            framePath(domain.directory, domain.spec.cacheName, written.frameStart, "vdb");
+        if (cacheRunIsAlive(*previous))
+            throw Error(cache, "another eikon simulate (pid " + std::to_string(previous->pid) +
+                                   ") is writing this cache; wait for it or stop it");
+        logInfo(cache + ": " + stoppedRunText(*previous) + "; this run writes frames " +
+                std::to_string(written.frameStart) + "-" + std::to_string(written.frameEnd));
+        domain.stopped = previous;
+    }
+}
+
+// After this run wrote every frame: its marks go, unless a stopped run's frames reach past this
+// run's last one, which may still mix two runs; the mark then says so from that frame on.
+void unmarkCacheRuns(const std::vector<Domain>& domains, const TimeSettings& written) {
+    for (const Domain& domain : domains) {
+        const std::optional<CacheRunMarker>& stopped = domain.stopped;
+        if (stopped && stopped->lastFrame > written.frameEnd)
+            writeCacheRunMarker(domain.markPath,
+                                thisRunMarker(std::min(stopped->firstFrame, written.frameStart),
+                                              stopped->lastFrame, written.frameEnd));
+        else
+            removeCacheRunMarker(domain.markPath);
+    }
+}
+
+// Marks every domain's cache: this run has finished the frames through `finishedThrough`.
+void markCacheRuns(const std::vector<Domain>& domains, const TimeSettings& written,
+                   int finishedThrough) {
+    for (const Domain& domain : domains)
+        writeCacheRunMarker(domain.markPath,
+                            thisRunMarker(written.frameStart, written.frameEnd, finishedThrough));
+}
 
 // After a failure at frame lastComplete + 1: that frame (which some domains may have written
 // already) and the frames after it, left in the folders by an earlier run, would make a cache
@@ -128,7 +175,8 @@ int runSimulate(const SimulateOptions& o) {
         fs::create_directories(directory, ec);
         if (ec) throw Error(directory, "cannot create the cache folder: " + ec.message());
         removeStalePartials(directory, spec.cacheName, written.frameStart, written.frameEnd, "vdb");
-        domains.push_back({spec, directory, sim::smokeSolverFrom(scene, d)});
+        domains.push_back({spec, directory, sim::smokeSolverFrom(scene, d),
+                           cacheRunMarkerPath(directory, spec.cacheName), std::nullopt});
         const glm::ivec3 n = spec.resolution;
         std::printf("smoke%s%s %dx%dx%d, voxel %g, %g fps, frames %d-%d -> %s\n",
                     spec.label.empty() ? "" : " ", spec.label.c_str(), n.x, n.y, n.z,
@@ -139,16 +187,26 @@ int runSimulate(const SimulateOptions& o) {
     // Frame f holds the state after f − first + 1 frames of stepping. Every frame up to
     // lastComplete is complete in every domain (written from written.frameStart on).
     int lastComplete = first - 1;
+    checkCacheRuns(domains, written);
+    try {
+        markCacheRuns(domains, written, written.frameStart - 1);
+    } catch (const Error&) {  // nothing written yet: the caches stay as they were
+        for (const Domain& domain : domains) removeCacheRunMarker(domain.markPath);
+        throw;
+    }
     try {
         for (int frame = first; frame <= written.frameEnd; ++frame) {
             for (Domain& domain : domains)
                 totalMs += stepFrame(domain, frame, frame >= written.frameStart);
             lastComplete = frame;
+            if (frame >= written.frameStart) markCacheRuns(domains, written, frame);
         }
     } catch (const Error& e) {
-        throw Error(e.where(),
-                    e.reason() + "; " + keepCacheConsistent(domains, lastComplete, written));
+        const std::string valid = keepCacheConsistent(domains, lastComplete, written);
+        for (const Domain& domain : domains) removeCacheRunMarker(domain.markPath);
+        throw Error(e.where(), e.reason() + "; " + valid);
     }
+    unmarkCacheRuns(domains, written);
     const int stepped = written.frameEnd - first + 1;
     std::printf("simulated %d frames in %.1f ms (%.1f ms per frame)\n", stepped, totalMs,
                 totalMs / stepped);
@@ -160,6 +218,7 @@ int runSimulate(const SimulateOptions& o) {
 void addSimulateCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand(
         "simulate", "Run a scene's smoke simulation and write one VDB file per frame");
+    addMemoryLimitOption(cmd);
     auto o = std::make_shared<SimulateOptions>();  // CLI11 binds by reference
     cmd->add_option("scene", o->scene, "scene.json with a \"simulation\" section")->required();
     cmd->add_option("-o,--output", o->outputDir,

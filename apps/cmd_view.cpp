@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/memory_limit_option.h"
 #include "apps/scene_driver.h"
 #include "apps/scene_input.h"
 #include "apps/view_handles.h"
@@ -74,6 +75,7 @@ int runView(const ViewOptions& o) {
 
 void addViewCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand("view", "Show a scene or VDB cache in a window, live");
+    addMemoryLimitOption(cmd);
     auto o = std::make_shared<ViewOptions>();
     cmd->add_option("input", o->input, "scene.json or cache.vdb")->required();
     cmd->add_option("--size", o->size, "window size WIDTHxHEIGHT");

@@ -10,13 +10,14 @@ void addRenderCommand(CLI::App& app, int& exitCode);
 void addDiffCommand(CLI::App& app, int& exitCode);
 void addViewCommand(CLI::App& app, int& exitCode);
 void addSimulateCommand(CLI::App& app, int& exitCode);
-// `eikon bench smoke|advection|voxelize|arap`: benchmark programs (timings live here, never in
-// unit tests).
+// `eikon bench smoke|advection|voxelize|arap|methods|soak`: benchmark programs (timings live here,
+// never in unit tests).
 void addBenchCommand(CLI::App& app, int& exitCode);
 void addBenchSmokeCommand(CLI::App& bench, int& exitCode);
 void addBenchAdvectionCommand(CLI::App& bench, int& exitCode);
 void addBenchVoxelizeCommand(CLI::App& bench, int& exitCode);
 void addBenchArapCommand(CLI::App& bench, int& exitCode);
 void addBenchMethodsCommand(CLI::App& bench, int& exitCode);
+void addBenchSoakCommand(CLI::App& bench, int& exitCode);
 
 }  // namespace eikon::app

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/memory_limit.h"
 #include "core/scene.h"
+#include "core/vdb_grid_check.h"
 
 namespace eikon {
 namespace {
@@ -63,6 +66,31 @@ double profileAt(const SourceSpec& src, glm::dvec3 p) {
     return double(src.value);
 }
 
+// The voxels makeProceduralField visits: the shape's extent grown by its falloff, clipped, one
+// voxel of margin. False when the clip box leaves nothing.
+bool proceduralVoxelBox(const SourceSpec& src, glm::ivec3& i0, glm::ivec3& i1) {
+    if (src.type != SourceType::Sphere && src.type != SourceType::Box)
+        throw Error(src.jsonPath, "not a procedural source (sphere or box)");
+    glm::dvec3 lo, hi;
+    shapeExtent(src, lo, hi);
+    lo -= double(src.falloff);
+    hi += double(src.falloff);
+    if (src.clip) {
+        lo = glm::max(lo, glm::dvec3(src.clip->min));
+        hi = glm::min(hi, glm::dvec3(src.clip->max));
+    }
+    if (glm::any(glm::greaterThanEqual(lo, hi))) return false;
+    const double h = src.voxelSize;
+    // Voxel indices are ints; the scene reader keeps shapes far closer (kMaxProceduralVoxels).
+    constexpr double kMaxIndex = double(1 << 30);
+    if (glm::any(glm::greaterThan(glm::abs(glm::max(glm::abs(lo), glm::abs(hi)) / h),
+                                  glm::dvec3(kMaxIndex))))
+        throw Error(src.jsonPath, "the shape lies more than 2^30 voxels from the origin");
+    i0 = glm::ivec3(glm::floor(lo / h)) - 1;
+    i1 = glm::ivec3(glm::ceil(hi / h)) + 1;
+    return true;
+}
+
 bool insideClip(const SourceSpec& src, glm::dvec3 p) {
     if (!src.clip) return true;
     const glm::dvec3 lo(src.clip->min), hi(src.clip->max);
@@ -84,25 +112,55 @@ double proceduralValue(const SourceSpec& src, glm::dvec3 p) {
     return 0.0;
 }
 
-openvdb::FloatGrid::Ptr makeProceduralField(const SourceSpec& src) {
-    if (src.type != SourceType::Sphere && src.type != SourceType::Box)
-        throw Error(src.jsonPath, "not a procedural source (sphere or box)");
-    const float h = src.voxelSize;
-    glm::dvec3 lo, hi;
-    shapeExtent(src, lo, hi);
-    lo -= double(src.falloff);
-    hi += double(src.falloff);
-    if (src.clip) {
-        lo = glm::max(lo, glm::dvec3(src.clip->min));
-        hi = glm::min(hi, glm::dvec3(src.clip->max));
+double proceduralFieldBytes(const SourceSpec& src) {
+    glm::ivec3 i0, i1;
+    if (!proceduralVoxelBox(src, i0, i1)) return 0.0;
+    // The nodes of OpenVDB's 5-4-3 tree the voxel box touches: 8³ leaves, 128³ and 4096³
+    // internal nodes (a shape astride the origin touches up to 8 of each kind). Partly covered
+    // nodes cost as much as full ones. A sphere's leaves fill about π/6 of its box (a quarter
+    // more for the leaves its surface cuts); its internal nodes are counted as the box's.
+    // Voxel centres in the margin the loop adds lie outside the extent and stay unset.
+    const glm::dvec3 first = glm::dvec3(i0) + 1.0, last = glm::dvec3(i1) - 2.0;
+    const auto nodesAcross = [&](int a, double width) {
+        return std::floor(last[a] / width) - std::floor(first[a] / width) + 1.0;
+    };
+    double nodes[3] = {1.0, 1.0, 1.0};
+    const double widths[3] = {8.0, 128.0, 4096.0};
+    for (int level = 0; level < 3; ++level)
+        for (int a = 0; a < 3; ++a) nodes[level] *= nodesAcross(a, widths[level]);
+    constexpr double kSphereFill = 3.14159265358979 / 6.0 * 1.25;
+    const double fill = src.type == SourceType::Sphere ? std::min(1.0, kSphereFill) : 1.0;
+    VdbTreeNodeCounts counts;
+    counts.leaves = std::uint64_t(std::ceil(fill * nodes[0]));
+    counts.internal[0] = std::uint64_t(nodes[1]);
+    counts.internal[1] = std::uint64_t(nodes[2]);
+    VdbTreeLayout floats;
+    vdbTreeLayoutFor("Tree_float_5_4_3", false, floats);
+    return counts.bytes(floats);
+}
+
+void checkProceduralFieldMemory(const SourceSpec& src, const std::string& where) {
+    double bytes = 0.0;
+    try {
+        bytes = proceduralFieldBytes(src);
+    } catch (const Error& e) {
+        throw Error(where, e.reason());
     }
+    const std::string shape = src.type == SourceType::Sphere ? "sphere" : "box";
+    std::ostringstream what;
+    what << "the " << shape << "'s field at voxel size " << src.voxelSize;
+    checkMemory(where, bytes, what.str(), "use a larger voxel_size");
+}
+
+openvdb::FloatGrid::Ptr makeProceduralField(const SourceSpec& src) {
+    glm::ivec3 i0, i1;
+    const bool any = proceduralVoxelBox(src, i0, i1);
+    const float h = src.voxelSize;
     auto grid = openvdb::FloatGrid::create(0.0f);
     grid->setTransform(cellAlignedTransform(h));
     grid->setGridClass(openvdb::GRID_FOG_VOLUME);
-    if (glm::any(glm::greaterThanEqual(lo, hi))) return grid;  // clipped away
+    if (!any) return grid;  // clipped away
     auto acc = grid->getAccessor();
-    const glm::ivec3 i0 = glm::ivec3(glm::floor(lo / double(h))) - 1;
-    const glm::ivec3 i1 = glm::ivec3(glm::ceil(hi / double(h))) + 1;
     for (int k = i0.z; k <= i1.z; ++k)
         for (int j = i0.y; j <= i1.y; ++j)
             for (int i = i0.x; i <= i1.x; ++i) {

@@ -11,6 +11,8 @@
 //        = 0                          otherwise, and wherever p is outside the clip box,
 // where outside the shape the profile P is taken where it is at the surface (the ramp's
 // coordinate clamped to the shape's extent, the Luneburg radius clamped to R).
+#include <string>
+
 #include <openvdb/openvdb.h>
 
 #include <glm/vec3.hpp>
@@ -23,6 +25,11 @@ struct SourceSpec;
 // box whose faces lie on multiples of h is covered exactly. Each voxel holds f at its centre.
 // `src` is a Sphere or Box source; throws eikon::Error for any other type.
 openvdb::FloatGrid::Ptr makeProceduralField(const SourceSpec& src);
+// An upper bound of the bytes makeProceduralField's grid takes (core/memory_limit.h), computed
+// from the shape alone, before anything is allocated.
+double proceduralFieldBytes(const SourceSpec& src);
+// Throws eikon::Error at `where` (a file and JSON pointer) when that exceeds the memory limit.
+void checkProceduralFieldMemory(const SourceSpec& src, const std::string& where);
 
 // f at a world point, computed in double: what makeProceduralField stores at a voxel centre
 // (rounded to float).

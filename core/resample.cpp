@@ -13,6 +13,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include "core/error.h"
+#include "core/memory_limit.h"
 
 namespace eikon {
 namespace {
@@ -112,6 +113,14 @@ RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields,
             const glm::vec3 pad = 0.5f * (grown - all.size());
             v.bounds = v.bounds.unite({meshes.min - pad, meshes.max + pad});
         }
+    }
+    if (scene.volume.autoResolution) {  // a fixed one was checked with the scene
+        const glm::ivec3 n = v.resolution;
+        checkMemory(scene.path + ":/volume/max_resolution",
+                    double(n.x) * double(n.y) * double(n.z) * kRenderBytesPerVoxel,
+                    "the \"auto\" render volume of " + std::to_string(n.x) + "×" +
+                        std::to_string(n.y) + "×" + std::to_string(n.z) + " voxels",
+                    "lower volume.max_resolution or set volume.resolution");
     }
     return v;
 }

@@ -18,8 +18,10 @@
 #include "core/error.h"
 #include "core/field_registry.h"
 #include "core/json_reader.h"
+#include "core/procedural.h"
 #include "core/scene_animation.h"
 #include "core/scene_helpers.h"
+#include "core/scene_memory.h"
 #include "core/scene_meshes.h"
 #include "core/scene_receivers.h"
 #include "core/scene_simulation.h"
@@ -34,6 +36,7 @@ namespace fs = std::filesystem;
 using json::Object;
 using json::Range;
 using json::Value;
+using scene_detail::checkSceneMemory;
 using scene_detail::checkVoxelSize;
 using scene_detail::formatVec3;
 using scene_detail::resolveAgainst;
@@ -264,6 +267,9 @@ void checkVoxelCount(const Object& object, const SourceSpec& source, float exten
                << source.voxelSize << " (" << std::ceil(voxelsAcross) << " voxels)";
         object.failAt("voxel_size", reason.str());
     }
+    const Value& at = object.value();
+    checkProceduralFieldMemory(
+        source, at.json().contains("voxel_size") ? at.child("voxel_size").where() : at.where());
 }
 
 void readSphereSource(Object& object, SourceSpec& source) {
@@ -708,6 +714,7 @@ Scene readScene(const Value& root, const std::string& file) {
                         "a \"simulation\" source shows the scene's smoke simulation, and the scene "
                         "has no \"simulation\" section");
     object.finish();
+    checkSceneMemory(scene, root);
     return scene;
 }
 

@@ -43,6 +43,7 @@ void checkFramePresent(const Scene& scene, const SourceSpec& src, const VdbSeque
 void SceneSources::addProcedural(const SourceSpec& src, const std::string& origin,
                                  FieldRegistry& fields) {
     ensureOpenVdbInitialized();
+    checkProceduralFieldMemory(src, origin);  // tracks may have grown the shape since parsing
     openvdb::FloatGrid::Ptr grid = makeProceduralField(src);
     // Shapes that write the same field overlap by taking the larger value (a union).
     if (proceduralFields_.count(src.field) && fields.has(src.field)) {

@@ -1,5 +1,6 @@
 #include "core/vdb_grid_check.h"
 
+#include <algorithm>
 #include <array>
 #include <bitset>
 #include <cstring>
@@ -195,15 +196,16 @@ using LeafCounts = std::vector<std::uint16_t>;
 
 template <int kLevel>  // 2: 32^3 internal node, 1: 16^3 internal node
 void checkInternalTopology(Cursor& c, const VdbTreeLayout& L, std::uint32_t compression,
-                           LeafCounts& leaves) {
+                           LeafCounts& leaves, VdbTreeNodeCounts& counts) {
     constexpr size_t kValues = kLevel == 2 ? 32768 : 4096;
+    ++counts.internal[kLevel - 1];
     const auto childMask = readMask<kValues>(c, "an internal node's child mask");
     const auto valueMask = readMask<kValues>(c, "an internal node's value mask");
     checkNodeValues<kValues>(c, valueMask, L, compression, "an internal node's values");
     for (size_t i = 0; i < kValues; ++i) {
         if (!childMask.test(i)) continue;
         if constexpr (kLevel == 2) {
-            checkInternalTopology<1>(c, L, compression, leaves);
+            checkInternalTopology<1>(c, L, compression, leaves, counts);
         } else {
             // Every leaf kind stores one 512-bit mask as its topology.
             leaves.push_back(std::uint16_t(readMask<512>(c, "a leaf's value mask").count()));
@@ -342,8 +344,22 @@ std::int64_t checkVdbGridDescriptor(std::istream& is, std::int64_t end, bool has
     return c.pos();
 }
 
+double VdbTreeNodeCounts::bytes(const VdbTreeLayout& L) const {
+    // OpenVDB's nodes: a leaf's 512 values (or bits) and masks; an internal node's table of
+    // 4096 or 32768 child-or-tile unions (8 bytes, or the value when it is larger) and masks.
+    const double leafBytes =
+        L.leaf == VdbTreeLayout::Leaf::Values ? 512.0 * L.valueBytes + 96.0 : 192.0;
+    const double slot = std::max(8.0, double(L.valueBytes));
+    // The grid, its transform, metadata and root node: a few KiB, and a map entry per child.
+    constexpr double kGridBytes = 4096.0;
+    return kGridBytes + double(leaves) * leafBytes +
+           double(internal[0]) * (4096.0 * slot + 1024.0) +
+           double(internal[1]) * (32768.0 * slot + 8192.0 + 128.0);
+}
+
 std::int64_t checkVdbTree(std::istream& is, std::int64_t end, const VdbTreeLayout& L,
-                          std::uint32_t compression) {
+                          std::uint32_t compression, VdbTreeNodeCounts* countsOut) {
+    VdbTreeNodeCounts counts;
     Cursor c(is, end);
     const std::int64_t countAt = c.pos();
     const auto bufferCount = c.get<std::int32_t>("the tree's buffer count");
@@ -370,9 +386,11 @@ std::int64_t checkVdbTree(std::istream& is, std::int64_t end, const VdbTreeLayou
         std::array<std::int32_t, 3> origin{};
         c.bytes(origin.data(), sizeof(origin), "a root child's origin");
         LeafCounts leaves;
-        checkInternalTopology<2>(c, L, compression, leaves);
+        checkInternalTopology<2>(c, L, compression, leaves, counts);
+        counts.leaves += leaves.size();
         roots[origin] = std::move(leaves);  // a repeated origin replaces the earlier child
     }
+    if (countsOut) *countsOut = counts;
     // Tree::readBuffers visits the root's children in map order, leaves depth first.
     for (const auto& [origin, leaves] : roots)
         for (const std::uint16_t active : leaves) checkLeafBuffers(c, active, L, compression);

@@ -49,10 +49,19 @@ std::int64_t checkVdbString(std::istream& is, std::int64_t end, const char* what
 // reading it: a corrupt length asked for gigabytes. Returns the offset just past the descriptor.
 std::int64_t checkVdbGridDescriptor(std::istream& is, std::int64_t end, bool hasInstanceParent);
 
+// The nodes a tree's topology declares, counted by the walk before OpenVDB allocates them.
+struct VdbTreeNodeCounts {
+    std::uint64_t leaves = 0;
+    std::uint64_t internal[2] = {0, 0};  // 16^3 and 32^3 internal nodes
+    // What OpenVDB will allocate for them (an upper bound; core/memory_limit.h).
+    double bytes(const VdbTreeLayout& layout) const;
+};
+
 // Checks a tree's topology and buffers (Tree::readTopology then Tree::readBuffers, file format
 // >= 222) starting at the stream's position; `compression` is the grid's io::COMPRESS_* flags.
-// Returns the offset just past the last buffer, which is at most `end`.
+// Returns the offset just past the last buffer, which is at most `end`; `counts`, when given,
+// receives the nodes the topology declares.
 std::int64_t checkVdbTree(std::istream& is, std::int64_t end, const VdbTreeLayout& layout,
-                          std::uint32_t compression);
+                          std::uint32_t compression, VdbTreeNodeCounts* counts = nullptr);
 
 }  // namespace eikon

@@ -6,6 +6,7 @@
 #include <openvdb/io/GridDescriptor.h>
 
 #include "core/error.h"
+#include "core/memory_limit.h"
 #include "core/printable.h"
 #include "core/vdb_grid_check.h"
 #include "core/vdb_import.h"
@@ -37,11 +38,16 @@ struct VdbReader::Impl : public openvdb::io::Archive {
 
 namespace {
 
+// A grid as messages name it; the name is the file's and may hold control characters.
+std::string gridLabel(const std::string& name) {
+    return "grid '" + printable(name) + "'";
+}
+
 // Walks grid `gd`'s bytes as Archive::readGrid will read them (compression flags, metadata,
 // transform, tree) and throws VdbFormatError on a size or flag OpenVDB would trust. Instances
 // have no tree of their own; their parent's is walked when it is read.
 void checkGridBytes(std::istream& is, const openvdb::io::GridDescriptor& gd,
-                    const VdbReader::Entry& e) {
+                    const VdbReader::Entry& e, const std::string& path) {
     gd.seekToGrid(is);
     if (e.endPos - e.gridPos < 4) throw VdbFormatError("the grid has no compression flags");
     std::uint32_t compression = 0;
@@ -68,18 +74,18 @@ void checkGridBytes(std::istream& is, const openvdb::io::GridDescriptor& gd,
     openvdb::math::Transform transform;
     transform.read(is);
     if (gd.isInstance()) return;
-    checkVdbTree(is, e.endPos, layout, compression);
+    VdbTreeNodeCounts counts;
+    checkVdbTree(is, e.endPos, layout, compression, &counts);
+    // A few megabytes of well-compressed leaves can expand to more than the machine holds.
+    checkMemory(path, counts.bytes(layout),
+                gridLabel(e.name) + " (" + std::to_string(counts.leaves) + " leaves)",
+                "resample it coarser in the tool that wrote it");
 }
 
 // `detail` is OpenVDB's message, which may quote the file's bytes: escaped here.
 std::string truncatedOrCorrupt(const std::string& what, const std::string& detail) {
     return what + " could not be read; the file is truncated or corrupt (" +
            printable(detail, 200) + ")";
-}
-
-// A grid as messages name it; the name is the file's and may hold control characters.
-std::string gridLabel(const std::string& name) {
-    return "grid '" + printable(name) + "'";
 }
 
 }  // namespace
@@ -195,7 +201,7 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
         openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(e.type);
         grid->setSaveFloatAsHalf(e.savedAsHalf);
         impl_->stream.clear();
-        checkGridBytes(impl_->stream, gd, e);
+        checkGridBytes(impl_->stream, gd, e, path_);
         impl_->stream.clear();
         gd.seekToGrid(impl_->stream);
         Impl::readGridData(grid, gd, impl_->stream);

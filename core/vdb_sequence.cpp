@@ -2,7 +2,9 @@
 
 #include <cctype>
 #include <filesystem>
+#include <optional>
 
+#include "core/cache_run_marker.h"
 #include "core/error.h"
 #include "core/log.h"
 
@@ -59,6 +61,27 @@ const std::string& VdbSequence::fileForFrame(int frame) const {
     return std::prev(it)->second;
 }
 
+namespace {
+
+// A cache that an `eikon simulate` run killed midway wrote into (core/cache_run_marker.h) mixes
+// that run's frames with an earlier run's, each file complete: refused while the mark stands and
+// the sequence holds frames the run did not finish. A run still going is fine (a cache watched
+// while it is written).
+void checkNoStoppedRun(const VdbSequence& seq) {
+    std::string cacheName = seq.prefix;
+    if (!cacheName.empty() && (cacheName.back() == '_' || cacheName.back() == '.'))
+        cacheName.pop_back();
+    const std::string markPath = cacheRunMarkerPath(seq.directory, cacheName);
+    const std::optional<CacheRunMarker> mark = readCacheRunMarker(markPath);
+    if (!mark || cacheRunIsAlive(*mark)) return;
+    const auto after = seq.frames.upper_bound(mark->finishedThrough);
+    if (after == seq.frames.end() || after->first > mark->lastFrame) return;
+    throw Error(seq.pattern(), stoppedRunText(*mark) + "; re-run eikon simulate, or delete " +
+                                   markPath + " to use the cache as it is");
+}
+
+}  // namespace
+
 VdbSequence findVdbSequence(const std::string& fileOrPattern) {
     const fs::path given(fileOrPattern);
     VdbSequence seq;
@@ -86,6 +109,7 @@ VdbSequence findVdbSequence(const std::string& fileOrPattern) {
     if (seq.frames.empty()) throw Error(fileOrPattern, "no frames of " + seq.pattern() + " found");
     for (int f = seq.first(); f <= seq.last(); ++f)
         if (!seq.frames.count(f)) seq.missing.push_back(f);
+    checkNoStoppedRun(seq);
     return seq;
 }
 

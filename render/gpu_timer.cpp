@@ -12,6 +12,11 @@ namespace {
 
 const char* const kWhere = "GPU timer";
 
+// Queries waiting to be read before begin() reads them itself. A caller that never asks for the
+// results (a loop that prints no stats) would otherwise make a query per stage per frame for
+// ever; the oldest of 64 belong to frames long finished, so reading them does not stall.
+constexpr size_t kMaxPendingQueries = 64;
+
 bool timerQueriesSupported() {
     GLint bits = 0;
     glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
@@ -43,6 +48,7 @@ void GpuStageTimer::begin(const std::string& stage) {
     }
     openStage_ = stageIndex(stage);
     if (gpu_) {
+        if (pending_.size() >= kMaxPendingQueries) collectPending();
         const GLuint query = acquireQuery();
         glBeginQuery(GL_TIME_ELAPSED, query);
         pending_.push_back({openStage_, query});

@@ -1,7 +1,8 @@
 #pragma once
 // Per-stage timing of the pipeline: GPU time from GL_TIME_ELAPSED queries and CPU wall time from
 // steady_clock, so that --stats and the speed bench can tell a GPU-bound stage from one that
-// waits on the host. Query results are read only in results(), so timing does not stall a frame.
+// waits on the host. Query results are read in results(), so timing does not stall a frame, or by
+// begin() once 64 wait, so that a caller that never reads them holds a bounded number.
 #include <chrono>
 #include <string>
 #include <vector>

@@ -363,8 +363,23 @@ ShaderProgram ShaderProgram::graphics(const std::string& vertexPath,
     return ShaderProgram(linkProgram({vs, fs}, fragment), fragment.files[0]);
 }
 
+namespace {
+
+// A program deleted while it is the one in use stays alive until another is used (GL 4.3 core,
+// §7.3): the last program of a renderer would outlive it in a context that goes on (a window's,
+// a test's). Unbound first, it goes now.
+void deleteProgram(GLuint program) {
+    if (!program) return;
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    if (GLuint(current) == program) glUseProgram(0);
+    glDeleteProgram(program);
+}
+
+}  // namespace
+
 ShaderProgram::~ShaderProgram() {
-    if (id_) glDeleteProgram(id_);
+    deleteProgram(id_);
 }
 
 ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept
@@ -374,7 +389,7 @@ ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept
 
 ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
     if (this != &other) {
-        if (id_) glDeleteProgram(id_);
+        deleteProgram(id_);
         id_ = other.id_;
         name_ = std::move(other.name_);
         locations_ = std::move(other.locations_);

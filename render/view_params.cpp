@@ -19,13 +19,18 @@ shared::GpuLight packLight(const LightSpec& l) {
     float type = EK_LIGHT_POINT;
     if (l.type == LightType::Directional) type = EK_LIGHT_DIRECTIONAL;
     if (l.type == LightType::Spot) type = EK_LIGHT_SPOT;
-    const float cosOuter = std::cos(glm::radians(l.coneAngleDeg));
-    const float cosInner =
-        std::cos(glm::radians(std::max(l.coneAngleDeg - l.coneSoftnessDeg, 0.0f)));
+    // The cones as versines 1 − cos θ = 2 sin²(θ/2), in double (shaders/shared/gpu_types.h).
+    const auto versine = [](double degrees) {
+        const double s = std::sin(0.5 * glm::radians(degrees));
+        return 2.0 * s * s;
+    };
+    const double outer = versine(double(l.coneAngleDeg));
+    const double inner = versine(std::max(double(l.coneAngleDeg - l.coneSoftnessDeg), 0.0));
     g.position = v4(l.position, type);
-    g.direction = v4(glm::normalize(l.direction), cosOuter);
-    // smoothstep(outer, inner, cos) needs inner > outer; a hard edge gets a hair of width.
-    g.radiance = v4(l.color * l.intensity, std::max(cosInner, cosOuter + 1e-6f));
+    g.direction = v4(glm::normalize(l.direction), float(outer));
+    // smoothstep(inner, outer, v) needs inner < outer; a hard edge gets a hair of width, 1e-4 of
+    // the cone's versine whatever its angle.
+    g.radiance = v4(l.color * l.intensity, float(std::min(inner, outer * (1.0 - 1e-4))));
     return g;
 }
 

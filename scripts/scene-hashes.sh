@@ -53,6 +53,7 @@ frame_of() {
         light_circling_glass) echo 6 ;;
         water_pool) echo 4 ;;
         smoke_glass_mesh) echo 3 ;;
+        soak_smoke) echo 3 ;;
         *) echo "" ;;
     esac
 }

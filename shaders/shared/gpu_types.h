@@ -51,10 +51,11 @@ struct GpuMaterial {
 
 struct GpuLight {
     vec4 position;   // xyz: world position (point, spot); w: type, EK_LIGHT_* (lightType)
-    vec4 direction;  // xyz: unit direction the light travels (directional, spot); w: cos(outer)
-                     // (lightCosOuter)
-    vec4 radiance;   // rgb: colour × intensity; w: cos(inner), where the spot edge starts
-                     // (lightCosInner)
+    vec4 direction;  // xyz: unit direction the light travels (directional, spot); w: the outer
+                     // cone's versine 1 − cos θ (lightVersineOuter)
+    vec4 radiance;   // rgb: colour × intensity; w: the inner cone's versine, where the spot edge
+                     // starts (lightVersineInner). Versines, not cosines: a 0.05° cone's cosine
+                     // is 1 − 3.8e-7 and float resolves 6e-8 there, its versine to 1e-7 relative
 };
 
 // A diffuse plane across the volume (core/scene.h ReceiverSpec). Its map has texels.x × texels.y
@@ -209,10 +210,10 @@ inline int materialSlot(const GpuMaterial& m) {
 inline int lightType(const GpuLight& l) {
     return int(l.position.w);  // EK_LIGHT_*
 }
-inline float lightCosOuter(const GpuLight& l) {
+inline float lightVersineOuter(const GpuLight& l) {
     return l.direction.w;  // a spot light's cone: no light outside
 }
-inline float lightCosInner(const GpuLight& l) {
+inline float lightVersineInner(const GpuLight& l) {
     return l.radiance.w;  // a spot light's cone: full light inside
 }
 inline int receiverAxis(const GpuReceiver& r) {
@@ -242,8 +243,8 @@ inline int receiverMapStart(const GpuReceiver& r) {
 #define materialIndexSlope(m) ((m).emission.w)
 #define materialSlot(m) ((m).slot.x)
 #define lightType(l) (int((l).position.w))
-#define lightCosOuter(l) ((l).direction.w)
-#define lightCosInner(l) ((l).radiance.w)
+#define lightVersineOuter(l) ((l).direction.w)
+#define lightVersineInner(l) ((l).radiance.w)
 #define receiverAxis(r) (int((r).plane.x))
 #define receiverPosition(r) ((r).plane.y)
 #define receiverFacing(r) ((r).plane.z)

@@ -51,22 +51,70 @@ float voxelExtinctionMax(ivec3 voxel) {
     return max(kappa.x, max(kappa.y, kappa.z));
 }
 
-// exp(−∫κ) from x toward a light, up to `maxDistance` or the volume's edge.
+// How far a shadow step's Simpson and trapezoid sums of κ may differ (optical depth) before the
+// step is halved: a sharp extinction edge inside a step makes them differ by a third of its
+// jump × the step, a smooth medium by far less. Steps halve down to EK_SHADOW_MIN_STEP_VOXELS.
+// 0.01: a sharp slab (τ 2-8) within 0.94% of Beer–Lambert; 0.002 gave 0.26% for 2-6× the light
+// stage's time on smoke caches (blender_smoke_sequence 35 → 90 ms per frame at 0.01, CPU twin).
+EK_CONST float EK_SHADOW_TAU_TOLERANCE = 0.01f;
+EK_CONST float EK_SHADOW_MIN_STEP_VOXELS = 0.125f;
+
+vec3 extinctionAlong(vec3 x, vec3 dir, float t) {
+    return extinctionAt(worldToVolumeIndex(x + dir * t));
+}
+
+// exp(−∫κ) from x toward a light, up to `maxDistance` or the volume's edge. Simpson's rule over
+// steps of shadowStep(params), refined where κ bends: a step whose Simpson and trapezoid sums
+// differ by more than EK_SHADOW_TAU_TOLERANCE is halved (its midpoint becomes the new end, so
+// nothing is sampled twice), and steps grow back ×2 where the two agree to a quarter of that. A
+// sharp slab (τ 8) was 32-78% off at a fixed 3-voxel midpoint step; smooth media keep the
+// nominal step.
 vec3 transmittanceToward(vec3 x, vec3 toLight, float maxDistance) {
     const float tEnd = min(intersectVolume(x, toLight).y, maxDistance);
-    const float h = shadowStep(params);
-    const int steps = min(int(ceil(max(tEnd, 0.0f) / h)), EK_MAX_STEPS);
+    const float hMax = shadowStep(params);
+    const vec3 voxel = volumeVoxelSize();
+    const float hMin = min(hMax, EK_SHADOW_MIN_STEP_VOXELS * min(voxel.x, min(voxel.y, voxel.z)));
     vec3 tau = vec3(0.0f);
-    for (int i = 0; i < steps; ++i) {
-        const float t0 = float(i) * h;
-        const float t1 = min(t0 + h, tEnd);
-        tau += extinctionAt(worldToVolumeIndex(x + toLight * (0.5f * (t0 + t1)))) * (t1 - t0);
+    float t = 0.0f;
+    float h = hMax;
+    vec3 k0 = extinctionAlong(x, toLight, 0.0f);
+    vec3 kEnd = vec3(0.0f);
+    bool endKnown = false;  // kEnd holds κ at t + h: the midpoint of a step just halved
+    for (int i = 0; i < EK_MAX_STEPS && t < tEnd; ++i) {
+        const float s = min(h, tEnd - t);
+        const vec3 km = extinctionAlong(x, toLight, t + 0.5f * s);
+        const vec3 k1 = endKnown && s == h ? kEnd : extinctionAlong(x, toLight, t + s);
+        const vec3 simpson = (s / 6.0f) * (k0 + 4.0f * km + k1);
+        const vec3 gap = abs(simpson - 0.5f * s * (k0 + k1));
+        const float err = max(gap.x, max(gap.y, gap.z));
+        if (err > EK_SHADOW_TAU_TOLERANCE && s > hMin) {
+            h = 0.5f * s;
+            kEnd = km;
+            endKnown = true;
+            continue;
+        }
+        tau += simpson;
+        t += s;
+        k0 = k1;
+        endKnown = false;
+        if (err < 0.25f * EK_SHADOW_TAU_TOLERANCE) h = min(2.0f * h, hMax);
         if (min(min(tau.x, tau.y), tau.z) > 30.0f) break;  // e^-30: nothing gets through
     }
     return exp(-tau);
 }
 
 // Unshadowed irradiance from light l at x; also the unit direction toward it and its distance.
+// A spot light's falloff along unit direction d (travelling away from the light): 1 inside the
+// inner cone, 0 outside the outer, smoothstep between, in the versine v = 1 − cos θ =
+// |d − axis|² / 2 (exact for small angles, where 1 − dot(d, axis) loses every digit).
+// smoothstep(cos θo, cos θi, cos θ) = 1 − smoothstep(vi, vo, v): the same falloff, and its solid
+// angle ∫ falloff dΩ = 2π ∫ falloff dv = π (vo + vi).
+float spotFalloff(GpuLight light, vec3 d) {
+    const vec3 off = d - vec3(light.direction);
+    const float v = 0.5f * dot(off, off);
+    return 1.0f - smoothstep(lightVersineInner(light), lightVersineOuter(light), v);
+}
+
 vec3 lightIrradiance(int l, vec3 x, EK_OUT(vec3) toLight, EK_OUT(float) lightDistance) {
     const GpuLight light = params.lights[l];
     const int type = lightType(light);
@@ -80,9 +128,6 @@ vec3 lightIrradiance(int l, vec3 x, EK_OUT(vec3) toLight, EK_OUT(float) lightDis
     lightDistance = max(length(d), 1e-6f);
     toLight = d / lightDistance;
     float falloff = 1.0f / (lightDistance * lightDistance);
-    if (type == EK_LIGHT_SPOT) {
-        const float c = dot(-toLight, vec3(light.direction));
-        falloff *= smoothstep(lightCosOuter(light), lightCosInner(light), c);
-    }
+    if (type == EK_LIGHT_SPOT) falloff *= spotFalloff(light, -toLight);
     return radiance * falloff;
 }

@@ -204,8 +204,9 @@ vec4 perspectiveRect(GpuLight light, int grid, vec3 a, vec3 u, vec3 w, EK_OUT(fl
         r = vec4(min(r.x, s), min(r.y, t), max(r.z, s), max(r.w, t));
     }
     if (grid != EK_PHOTON_GRID_SPOT) return r;
-    const float c = lightCosOuter(light);
-    const float halfWidth = sqrt(max(1.0f - c * c, 0.0f)) / c;
+    // tan θo from the versine v: sin θ = √(v (2 − v)), cos θ = 1 − v.
+    const float v = lightVersineOuter(light);
+    const float halfWidth = sqrt(max(v * (2.0f - v), 0.0f)) / (1.0f - v);
     if (!(minCos > 0.0f)) return vec4(-halfWidth, -halfWidth, halfWidth, halfWidth);
     return vec4(max(r.x, -halfWidth), max(r.y, -halfWidth), min(r.z, halfWidth),
                 min(r.w, halfWidth));
@@ -236,7 +237,7 @@ int photonGrid(int l) {
         grid = EK_PHOTON_GRID_BOX;
         area = rectArea(r);
     }
-    if (type == EK_LIGHT_SPOT && lightCosOuter(light) >= EK_PHOTON_GRID_MIN_COS) {
+    if (type == EK_LIGHT_SPOT && 1.0f - lightVersineOuter(light) >= EK_PHOTON_GRID_MIN_COS) {
         a = perspectiveAxis(light, EK_PHOTON_GRID_SPOT);
         lightPlaneBasis(a, u, w);
         r = perspectiveRect(light, EK_PHOTON_GRID_SPOT, a, u, w, minCos);
@@ -289,9 +290,7 @@ GpuPhoton generatePointPhoton(int l, int grid, int photonsPerSide, int index, ui
     // 1 + s² + t² from the plane coordinates, not |a + s u + t w|²: exact for the ideal frame.
     const float r2 = 1.0f + q.x * q.x + q.y * q.y;
     float solidAngle = cellArea / (r2 * sqrt(r2));
-    if (lightType(light) == EK_LIGHT_SPOT)
-        solidAngle *= smoothstep(lightCosOuter(light), lightCosInner(light),
-                                 dot(d, normalize(vec3(light.direction))));
+    if (lightType(light) == EK_LIGHT_SPOT) solidAngle *= spotFalloff(light, d);
     return startPhoton(vec3(light.position), d, vec3(light.radiance) * solidAngle,
                        relativeThreshold);
 }

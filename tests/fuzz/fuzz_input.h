@@ -23,6 +23,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/memory_limit.h"
 #include "core/printable.h"
 
 namespace eikon::fuzz {
@@ -89,6 +90,12 @@ inline void quietLibraries() {
     std::cout.rdbuf(&discard);
     setLogSink([](LogLevel, const std::string& message) { expectOneLine("a warning", message); });
 }
+
+// eikon's memory limit (core/memory_limit.h) set under libFuzzer's -rss_limit_mb=2048
+// (scripts/fuzz.sh): an input whose estimate is over it gets eikon's one-line refusal, as it would
+// on a machine of that size, and one the estimate lets through but that takes more than 2 GB is a
+// finding (the estimate was wrong).
+inline void limitMemory() { setMemoryLimit(1024.0 * 1024.0 * 1024.0, "the fuzz targets' limit"); }
 
 // Runs one reader call; see the top of this file for what counts as a finding.
 template <class ReadFn>

@@ -8,6 +8,7 @@
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     eikon::fuzz::quietLibraries();
+    eikon::fuzz::limitMemory();
     return 0;
 }
 

@@ -13,6 +13,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     // spinning, under ASan and on a busy machine, cost more than the work; inputs are tiny.
     static tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
     eikon::fuzz::quietLibraries();
+    eikon::fuzz::limitMemory();
     eikon::ensureOpenVdbInitialized();
     return 0;
 }

@@ -174,18 +174,42 @@ TEST_CASE("a run killed at any point leaves every frame file complete",
         const RunResult killed = runEikon("simulate " + quoted(newScene) + " -o " + quoted(cache),
                                           dir, std::string("timeout -s KILL ") + delay);
         CHECK((killed.exitCode == 0 || killed.exitCode == 137));
+        int newFrames = 0, oldFrames = 0;
         for (int f = 1; f <= 6; ++f) {
             const std::string path = frameFile(cache, f);
             REQUIRE(fs::exists(path));
             const std::string bytes = readFile(path);
-            CHECK((bytes == old[size_t(f - 1)] || bytes == readFile(frameFile(reference, f))));
+            const bool isNew = bytes == readFile(frameFile(reference, f));
+            CHECK((bytes == old[size_t(f - 1)] || isNew));
+            (isNew ? newFrames : oldFrames) += 1;
+        }
+        // A cache mixing the two runs is marked (core/cache_run_marker.h), and rendering it is
+        // one error line saying which frames are the killed run's, until the next run.
+        const std::string render = "render " + quoted(newScene) +
+                                   " --frames 2 --size 8x8 --backend cpu -o " +
+                                   quoted(dir + "/out");
+        const bool marked = fs::exists(cache + "/puff.simulating");
+        if (newFrames > 0 && oldFrames > 0) CHECK(marked);
+        if (marked) {
+            const RunResult refused = runEikon(render, dir);
+            INFO(readFile(cache + "/puff.simulating") << refused.err);
+            CHECK(refused.exitCode == 1);
+            CHECK(refused.err.rfind("eikon: " + cache +
+                                        "/puff_####.vdb: an eikon simulate run "
+                                        "into this cache (pid ",
+                                    0) == 0);
+            CHECK(refused.err.find("may be from an earlier run") != std::string::npos);
         }
         const RunResult again =
             runEikon("simulate " + quoted(newScene) + " -o " + quoted(cache), dir);
+        INFO(again.err);
         REQUIRE(again.exitCode == 0);
-        for (const std::string& name : filesIn(cache))
+        for (const std::string& name : filesIn(cache)) {
             CHECK(name.find(".partial") == std::string::npos);
+            CHECK(name.find(".simulating") == std::string::npos);
+        }
         for (int f = 1; f <= 6; ++f)
             CHECK(readFile(frameFile(cache, f)) == readFile(frameFile(reference, f)));
+        CHECK(runEikon(render, dir).exitCode == 0);
     }
 }

@@ -2,6 +2,7 @@
 
 #include <glm/vector_relational.hpp>
 
+#include "core/memory_limit.h"
 #include "render/input_key.h"
 #include "render/receiver_map.h"
 
@@ -28,6 +29,7 @@ PhotonTransportSettings readPhotonTransportSettings(const json::Value* section) 
     PhotonTransportSettings s;
     if (!section) return s;
     Object object(*section, "the photon settings");
+    s.where = section->where();
     if (auto side = object.optional("per_side"))
         s.trace.photonsPerSide = static_cast<int>(side->integer(1, kMaxPhotonsPerSide));
     if (auto step = object.optional("min_step_voxels"))
@@ -67,6 +69,13 @@ void PhotonTransport::configure(const Scene& scene, ViewSetup& setup) {
     // Every light type emits photons (shaders/shared/photons.h).
     for (size_t l = 0; l < scene.lights.size(); ++l) shared::setLightInFluence(p, int(l));
     shared::setReadsFluence(p, shared::anyLightInFluence(p));
+    // Every photon of every light is in memory at once (GPU records and their read-back).
+    const PhotonPlan plan = planPhotons(setup, traceSettings());
+    checkMemory(settings_.where.empty() ? scene.path + ":/render/light_transport" : settings_.where,
+                double(plan.photons) * kPhotonBytes,
+                std::to_string(plan.photons) + " photons (" +
+                    std::to_string(settings_.trace.photonsPerSide) + " per side)",
+                "lower per_side");
 }
 
 PhotonSettings PhotonTransport::traceSettings() const {

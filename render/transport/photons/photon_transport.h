@@ -8,6 +8,7 @@
 //
 // Settings: render.light_transport.photons (docs/scene-format.md#renderlight_transportphotons).
 #include <memory>
+#include <string>
 
 #include "core/json_reader.h"
 #include "render/light_transport.h"
@@ -22,6 +23,9 @@ struct PhotonTransportSettings {
     // (BENCHMARKS.md): 65x less image error than 0 on the glass sphere in fog, for 2.4x the
     // photon steps.
     float kappaTolerance = 0.1f;
+    // The section's file and JSON pointer, for the memory check's message; empty: the scene's
+    // render.light_transport.
+    std::string where;
 };
 
 // The settings section; null: all defaults. Throws eikon::Error at the offending key.
