@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/printable.h"
 
 namespace eikon {
 
@@ -70,9 +71,10 @@ const Field& FieldRegistry::get(const std::string& name) const {
     auto it = fields_.find(name);
     if (it != fields_.end()) return it->second;
     std::string have;
-    for (const auto& [n, f] : fields_) have += (have.empty() ? "" : ", ") + n;
-    throw Error("fields",
-                "no field '" + name + "' (fields present: " + (have.empty() ? "none" : have) + ")");
+    // Field names may be grid names from a file: escaped, like every quote of a user's bytes.
+    for (const auto& [n, f] : fields_) have += (have.empty() ? "" : ", ") + printable(n);
+    throw Error("fields", "no field '" + printable(name) +
+                              "' (fields present: " + (have.empty() ? "none" : have) + ")");
 }
 
 openvdb::FloatGrid::ConstPtr FieldRegistry::floatGrid(const std::string& name) const {

@@ -251,7 +251,9 @@ std::string Range::describe() const {
 // ---- free helpers ----------------------------------------------------------------------------
 
 std::string describeValue(const Json& value) {
-    const std::string text = value.dump();
+    // dump() escapes the control characters below 0x20 as JSON does, but not DEL (0x7f), which
+    // printable() then writes as \x7f.
+    const std::string text = printable(value.dump(), std::string::npos);
     if (text.size() <= kMaxQuotedValueLength) return text;
     if (value.is_array()) return "an array of " + std::to_string(value.size()) + " elements";
     if (value.is_object()) return "an object with " + std::to_string(value.size()) + " keys";
@@ -304,7 +306,9 @@ std::string appendPointer(const std::string& pointer, const std::string& key) {
             escaped += c;
         }
     }
-    return pointer + "/" + escaped;
+    // The key is the user's bytes and the pointer goes into messages as their where(): a tab or
+    // a line end in a key must not reach the terminal raw.
+    return pointer + "/" + printable(escaped);
 }
 
 // ---- Value -----------------------------------------------------------------------------------

@@ -61,7 +61,9 @@ std::size_t editDistance(const std::string& a, const std::string& b);
 // Case and '_' differences count as close ("Intensity", "coneAngleDeg").
 std::string closestMatch(const std::string& word, const std::vector<std::string>& candidates);
 
-// Appends a key or index to a JSON pointer, escaping '~' and '/' as RFC 6901 requires.
+// Appends a key or index to a JSON pointer, escaping '~' and '/' as RFC 6901 requires. Pointers
+// are for messages: control characters in the key are written as printable() does, and a key
+// longer than 80 bytes is cut there.
 std::string appendPointer(const std::string& pointer, const std::string& key);
 
 // One JSON value and where it sits. Cheap to copy; refers to the document, which must outlive it.

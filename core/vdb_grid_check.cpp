@@ -329,6 +329,21 @@ std::int64_t checkVdbMetadata(std::istream& is, std::int64_t end) {
     return c.pos();
 }
 
+std::int64_t checkVdbString(std::istream& is, std::int64_t end, const char* what) {
+    Cursor c(is, end);
+    readName(c, what);
+    return c.pos();
+}
+
+std::int64_t checkVdbGridDescriptor(std::istream& is, std::int64_t end, bool hasInstanceParent) {
+    Cursor c(is, end);
+    readName(c, "a grid name");
+    readName(c, "a grid type");
+    if (hasInstanceParent) readName(c, "a grid's instance parent name");
+    c.skip(3 * sizeof(std::int64_t), "a grid's offsets");
+    return c.pos();
+}
+
 double VdbTreeNodeCounts::bytes(const VdbTreeLayout& L) const {
     // OpenVDB's nodes: a leaf's 512 values (or bits) and masks; an internal node's table of
     // 4096 or 32768 child-or-tile unions (8 bytes, or the value when it is larger) and masks.

@@ -37,6 +37,18 @@ bool vdbTreeLayoutFor(const std::string& type, bool savedAsHalf, VdbTreeLayout& 
 // ending no later than byte `end`; returns the offset just past it. Leaves the stream there.
 std::int64_t checkVdbMetadata(std::istream& is, std::int64_t end);
 
+// Checks a string as OpenVDB stores names (readString: a 32-bit length, then that many bytes),
+// starting at the stream's position and ending no later than byte `end`. readString allocates the
+// stated length before reading: a corrupt one asked for up to 4 GB. Returns the offset past it.
+std::int64_t checkVdbString(std::istream& is, std::int64_t end, const char* what);
+
+// Checks a grid descriptor (GridDescriptor::read's format: the grid's unique name, its type and,
+// when `hasInstanceParent` (file format >= 216), its instance parent's name, each a 32-bit length
+// and that many bytes; then three 64-bit offsets) starting at the stream's position and ending no
+// later than byte `end`. GridDescriptor::read allocates each string at its stated length before
+// reading it: a corrupt length asked for gigabytes. Returns the offset just past the descriptor.
+std::int64_t checkVdbGridDescriptor(std::istream& is, std::int64_t end, bool hasInstanceParent);
+
 // The nodes a tree's topology declares, counted by the walk before OpenVDB allocates them.
 struct VdbTreeNodeCounts {
     std::uint64_t leaves = 0;

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/printable.h"
 #include "core/vdb_reader.h"
 
 namespace eikon {
@@ -104,27 +105,28 @@ bool isFieldValueType(const std::string& valueType) {
            valueType == "vec3d";
 }
 
+// Grid names come from the file and may hold control characters: `gridName` and `fieldName`
+// (a grid's own name when no alias maps it) go through printable() in every message.
 void validate(const std::string& path, const std::string& gridName, const std::string& fieldName,
               const openvdb::GridBase& grid) {
+    const std::string quotedGrid = "grid '" + printable(gridName) + "'";
+    const std::string field = printable(fieldName);
     if (auto f = dynamic_cast<const openvdb::FloatGrid*>(&grid)) {
         const ValueStats s = scanFloatGrid(*f);
         if (s.nonFinite > 0)
-            throw Error(path, "grid '" + gridName + "' has " + std::to_string(s.nonFinite) +
-                                  " NaN/Inf values");
+            throw Error(path,
+                        quotedGrid + " has " + std::to_string(s.nonFinite) + " NaN/Inf values");
         if (fieldMustBeNonNegative(fieldName) && s.negative > 0) {
             const std::string why = fieldKind(fieldName) == field::kIor
                                         ? " (a material maps it to n = 1 + f·(ior − 1) >= 1)"
                                         : "";
-            throw Error(path, "grid '" + gridName + "' (" + fieldName + ") has " +
-                                  std::to_string(s.negative) + " negative values (minimum " +
-                                  std::to_string(s.minimum) + "); " + fieldName + " must be >= 0" +
-                                  why);
+            throw Error(path, quotedGrid + " (" + field + ") has " + std::to_string(s.negative) +
+                                  " negative values (minimum " + std::to_string(s.minimum) + "); " +
+                                  field + " must be >= 0" + why);
         }
     } else if (auto v = dynamic_cast<const openvdb::Vec3SGrid*>(&grid)) {
         const openvdb::Index64 n = countNonFiniteVectors(*v);
-        if (n > 0)
-            throw Error(path,
-                        "grid '" + gridName + "' has " + std::to_string(n) + " NaN/Inf values");
+        if (n > 0) throw Error(path, quotedGrid + " has " + std::to_string(n) + " NaN/Inf values");
     }
 }
 
@@ -179,13 +181,15 @@ VdbImportReport importVdb(const std::string& path, FieldRegistry& registry,
     std::vector<openvdb::GridBase::Ptr> grids;
     for (size_t i = 0; i < reader.entries().size(); ++i) {
         const VdbReader::Entry& e = reader.entries()[i];
+        const std::string name = printable(e.name);
         if (!e.registered) {
-            report.skipped.push_back(e.name + ": grid type " + e.type + " is not registered here");
+            report.skipped.push_back(name + ": grid type " + printable(e.type) +
+                                     " is not registered here");
             continue;
         }
         const std::string valueType = openvdb::GridBase::createGrid(e.type)->valueType();
         if (!isFieldValueType(valueType)) {
-            report.skipped.push_back(e.name + ": " + valueType +
+            report.skipped.push_back(name + ": " + valueType +
                                      " grid, not a field type (float, double, vec3s, vec3d)");
             continue;
         }
@@ -193,7 +197,7 @@ VdbImportReport importVdb(const std::string& path, FieldRegistry& registry,
         try {
             grid = reader.readGrid(i);
         } catch (const UnsupportedGridError& err) {
-            report.skipped.push_back(e.name + ": " + err.reason());
+            report.skipped.push_back(name + ": " + err.reason());
             continue;
         }
         openvdb::GridBase::Ptr asField = asFieldGrid(grid);
@@ -224,22 +228,23 @@ VdbImportReport importVdb(const std::string& path, FieldRegistry& registry,
     for (size_t i = 0; i < grids.size(); ++i) {
         const auto& grid = grids[i];
         const std::string& name = grid->getName();
+        const std::string shown = printable(name);
         if (name == "color_r" || name == "color_g" || name == "color_b") {
             if (auto f = openvdb::gridPtrCast<openvdb::FloatGrid>(grid)) colorChannels[name] = f;
         }
         if (target[i].empty()) {
             const auto& chosen = grids[best[name].second]->getName();
-            report.skipped.push_back(name + ": field " + name + " comes from grid '" + chosen +
-                                     "' (alias)");
+            report.skipped.push_back(shown + ": field " + shown + " comes from grid '" +
+                                     printable(chosen) + "' (alias)");
             continue;
         }
         if (assigned.count(target[i])) {
-            report.skipped.push_back(name + ": its name is taken by another grid of the file");
+            report.skipped.push_back(shown + ": its name is taken by another grid of the file");
             continue;
         }
         validate(path, name, target[i], *grid);
         assigned.insert(target[i]);
-        registry.set(target[i], grid, path + ":" + name);
+        registry.set(target[i], grid, path + ":" + shown);
         report.loaded.emplace_back(target[i], name);
     }
     if (!assigned.count(field::kColor) && colorChannels.size() == 3) {

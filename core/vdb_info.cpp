@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/field_registry.h"
+#include "core/printable.h"
 #include "core/vdb_import.h"
 #include "core/vdb_reader.h"
 
@@ -95,7 +96,9 @@ VdbFileInfo inspectVdb(const std::string& path) {
 std::string formatVdbInfo(const VdbFileInfo& info) {
     std::ostringstream s;
     s << info.path << ": VDB " << info.fileVersion;
-    if (!info.creator.empty()) s << ", written by " << info.creator;
+    // Names, types and the creator are the file's bytes: a terminal escape in one must not
+    // reach the terminal raw (core/printable.h).
+    if (!info.creator.empty()) s << ", written by " << printable(info.creator, 200);
     s << ", " << info.grids.size() << " grid" << (info.grids.size() == 1 ? "" : "s") << "\n";
     auto triple = [&](const auto& v) {
         std::ostringstream t;
@@ -103,8 +106,9 @@ std::string formatVdbInfo(const VdbFileInfo& info) {
         return t.str();
     };
     for (const GridInfo& g : info.grids) {
-        s << "  " << g.name << "  " << g.type << (g.savedAsHalf ? " (stored as half)" : "")
-          << ", class " << g.gridClass << "\n";
+        s << "  " << printable(g.name, 200) << "  " << printable(g.type)
+          << (g.savedAsHalf ? " (stored as half)" : "") << ", class " << printable(g.gridClass)
+          << "\n";
         if (!g.readable) {
             s << "    not readable here: " << g.problem << "\n";
             continue;

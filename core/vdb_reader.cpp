@@ -38,34 +38,54 @@ struct VdbReader::Impl : public openvdb::io::Archive {
 
 namespace {
 
+// A grid as messages name it; the name is the file's and may hold control characters.
+std::string gridLabel(const std::string& name) {
+    return "grid '" + printable(name) + "'";
+}
+
 // Walks grid `gd`'s bytes as Archive::readGrid will read them (compression flags, metadata,
-// transform, tree) and throws VdbFormatError on a size or flag OpenVDB would trust. Grid types
-// the walk does not know, instances (no tree of their own) and files older than format 222 are
-// left to OpenVDB as before.
+// transform, tree) and throws VdbFormatError on a size or flag OpenVDB would trust. Instances
+// have no tree of their own; their parent's is walked when it is read.
 void checkGridBytes(std::istream& is, const openvdb::io::GridDescriptor& gd,
                     const VdbReader::Entry& e, const std::string& path) {
-    if (openvdb::io::getFormatVersion(is) < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
-        return;
     gd.seekToGrid(is);
     if (e.endPos - e.gridPos < 4) throw VdbFormatError("the grid has no compression flags");
     std::uint32_t compression = 0;
     is.read(reinterpret_cast<char*>(&compression), sizeof(compression));
+    const std::streampos metaPos = is.tellg();
     checkVdbMetadata(is, e.endPos);
-    // Transforms are fixed-size records that OpenVDB reads safely; read one to get past it.
+    // Whether values are stored as half floats is what the grid's own metadata says
+    // (GridBase::saveFloatAsHalf, read after readMeta), not the descriptor's "_HalfFloat": a file
+    // where the two disagree had its tree walked at the wrong value size (found by fuzz_vdb).
+    // The metadata's bytes were checked just above, so OpenVDB reads them safely.
+    is.seekg(metaPos);
+    openvdb::MetaMap meta;
+    meta.readMeta(is);
+    const openvdb::Metadata::ConstPtr half = meta[openvdb::GridBase::META_SAVE_HALF_FLOAT];
+    VdbTreeLayout layout;
+    if (!vdbTreeLayoutFor(e.type, half && half->asBool(), layout))
+        throw VdbFormatError("grid type " + e.type + " has no known layout");
+    // A transform is its map's type name, then a fixed-size record that OpenVDB reads safely;
+    // the name's length is checked first (OpenVDB allocates it unread), then one is read to get
+    // past it.
+    const std::streampos transformPos = is.tellg();
+    checkVdbString(is, e.endPos, "the transform's map type");
+    is.seekg(transformPos);
     openvdb::math::Transform transform;
     transform.read(is);
-    VdbTreeLayout layout;
-    if (gd.isInstance() || !vdbTreeLayoutFor(e.type, e.savedAsHalf, layout)) return;
+    if (gd.isInstance()) return;
     VdbTreeNodeCounts counts;
     checkVdbTree(is, e.endPos, layout, compression, &counts);
     // A few megabytes of well-compressed leaves can expand to more than the machine holds.
     checkMemory(path, counts.bytes(layout),
-                "grid '" + printable(e.name) + "' (" + std::to_string(counts.leaves) + " leaves)",
+                gridLabel(e.name) + " (" + std::to_string(counts.leaves) + " leaves)",
                 "resample it coarser in the tool that wrote it");
 }
 
+// `detail` is OpenVDB's message, which may quote the file's bytes: escaped here.
 std::string truncatedOrCorrupt(const std::string& what, const std::string& detail) {
-    return what + " could not be read; the file is truncated or corrupt (" + detail + ")";
+    return what + " could not be read; the file is truncated or corrupt (" +
+           printable(detail, 200) + ")";
 }
 
 }  // namespace
@@ -84,7 +104,8 @@ VdbReader::VdbReader(const std::string& path) : path_(path), impl_(std::make_uni
     try {
         impl_->readHeaderOf(is);
     } catch (const std::exception& e) {
-        throw Error(path, std::string("not a readable VDB file (") + e.what() + ")");
+        throw Error(path,
+                    std::string("not a readable VDB file (") + printable(e.what(), 200) + ")");
     }
     fileVersion_ = impl_->version();
     try {
@@ -106,6 +127,13 @@ VdbReader::VdbReader(const std::string& path) : path_(path), impl_(std::make_uni
         for (int32_t i = 0; i < count; ++i) {
             openvdb::io::GridDescriptor gd;
             Entry e;
+            {
+                const std::streampos descriptorPos = is.tellg();
+                checkVdbGridDescriptor(is, std::int64_t(impl_->fileSize),
+                                       openvdb::io::getFormatVersion(is) >=
+                                           openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING);
+                is.seekg(descriptorPos);
+            }
             try {
                 gd.read(is);
             } catch (const openvdb::LookupError&) {
@@ -125,7 +153,7 @@ VdbReader::VdbReader(const std::string& path) : path_(path), impl_(std::make_uni
                 e.endPos = gd.getEndPos();
             }
             if (e.gridPos < 0 || e.gridPos > e.endPos || std::uintmax_t(e.endPos) > impl_->fileSize)
-                throw Error(path, "grid '" + e.name + "' should end at byte " +
+                throw Error(path, gridLabel(e.name) + " should end at byte " +
                                       std::to_string(e.endPos) + " but the file has " +
                                       std::to_string(impl_->fileSize) +
                                       " bytes: the file is truncated or corrupt");
@@ -149,10 +177,25 @@ std::string VdbReader::creator() const {
 
 openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
     const Entry& e = entries_.at(index);
-    const std::string what = "grid '" + e.name + "'";
+    const std::string what = gridLabel(e.name);
     if (!e.registered)
-        throw UnsupportedGridError(path_,
-                                   what + " has type " + e.type + ", which is not registered here");
+        throw UnsupportedGridError(
+            path_, what + " has type " + printable(e.type) + ", which is not registered here");
+    // OpenVDB reads what the walk below does not know without checking its sizes: a point grid's
+    // Blosc block asked for 10^17 bytes (found by fuzz_vdb). Such grids are not read at all.
+    VdbTreeLayout layout;
+    if (!vdbTreeLayoutFor(e.type, false, layout))
+        throw UnsupportedGridError(path_, what + " has type " + printable(e.type) +
+                                              ", whose bytes this reader cannot check (it reads "
+                                              "float, double, integer, vector, bool and mask "
+                                              "grids)");
+    const std::uint32_t format = openvdb::io::getFormatVersion(impl_->stream);
+    if (format < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION)
+        throw UnsupportedGridError(
+            path_, what + " is stored in VDB file format " + std::to_string(format) +
+                       ", older than the " +
+                       std::to_string(openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION) +
+                       " this reader can check");
     try {
         const openvdb::io::GridDescriptor& gd = impl_->descriptors[index];
         openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(e.type);
@@ -165,6 +208,13 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
         if (gd.isInstance()) {
             for (size_t p = 0; p < entries_.size(); ++p)
                 if (p != index && impl_->descriptors[p].uniqueName() == gd.instanceParentName()) {
+                    // OpenVDB writes an instance of the grid that holds the tree, never of
+                    // another instance; following one here could recurse without end (two
+                    // grids naming each other overflowed the stack).
+                    if (impl_->descriptors[p].isInstance())
+                        throw std::runtime_error("its instance parent " +
+                                                 gridLabel(entries_[p].name) +
+                                                 " is an instance itself");
                     grid->setTree(readGrid(p)->baseTreePtr());
                     return grid;
                 }
@@ -174,9 +224,11 @@ openvdb::GridBase::Ptr VdbReader::readGrid(size_t index) {
     } catch (const Error&) {
         throw;
     } catch (const openvdb::LookupError& ex) {
-        throw UnsupportedGridError(path_, what + " cannot be decoded here (" + ex.what() + ")");
+        throw UnsupportedGridError(
+            path_, what + " cannot be decoded here (" + printable(ex.what(), 200) + ")");
     } catch (const openvdb::KeyError& ex) {
-        throw UnsupportedGridError(path_, what + " cannot be decoded here (" + ex.what() + ")");
+        throw UnsupportedGridError(
+            path_, what + " cannot be decoded here (" + printable(ex.what(), 200) + ")");
     } catch (const std::exception& ex) {
         throw Error(path_, truncatedOrCorrupt(what, ex.what()));
     }

@@ -16,7 +16,8 @@
 namespace eikon {
 
 // A grid OpenVDB here cannot decode (unregistered grid type, unregistered point attribute
-// codec): callers skip it by name and go on with the rest of the file.
+// codec), or one whose bytes this reader cannot check before OpenVDB trusts them (point grids,
+// files older than format 222): callers skip it by name and go on with the rest of the file.
 class UnsupportedGridError : public Error {
 public:
     using Error::Error;
@@ -46,7 +47,7 @@ public:
 
     // Reads grid `index` completely. Throws eikon::Error(path, "grid 'x' could not be read; the
     // file is truncated or corrupt (...)") on bad bytes, UnsupportedGridError when the type or
-    // one of its codecs is not registered here.
+    // one of its codecs is not registered here, or its bytes cannot be checked.
     openvdb::GridBase::Ptr readGrid(size_t index);
 
 private:

@@ -13,6 +13,9 @@ PACKAGES=(
     catch2
     python3-matplotlib  # scripts/plot_advection_bench.py (run with /usr/bin/python3)
     clang-format  # scripts/check-format.sh
+    # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes, and llvm-symbolizer for
+    # readable stacks in a finding's report.
+    clang-14 libclang-rt-14-dev llvm-14
 )
 
 missing=()

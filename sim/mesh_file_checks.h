@@ -12,11 +12,9 @@
 // - an OBJ `v` line it cannot parse (`v nan 0 0`, `v 1e400 0 0`, `v x 0 0`) is skipped without a
 //   word, which shifts every later vertex index onto the wrong vertex; in an ASCII STL such a
 //   corner ends the reading early, leaving a mesh with no faces and no error;
-// - an ASCII OFF file cut short reads its last number again and again, giving a full set of
-//   garbage faces and no error.
+// OFF files have their own checks: sim/off_header.h, sim/off_ascii.h, sim/off_binary.h.
 #include <cstddef>
 #include <string>
-#include <vector>
 
 #include "sim/ply_header.h"
 
@@ -45,17 +43,5 @@ std::size_t checkVertexLines(const std::string& path, const std::string& bytes,
 
 // After reading an OBJ: its `v` lines are sound and OpenMesh read as many vertices.
 void checkObjVertices(const std::string& path, const std::string& bytes, std::size_t verticesRead);
-
-// Before reading an ASCII OFF: the counts on its header line are whole numbers that the rest of
-// the file can back (every vertex at least one byte and a separator per coordinate, every face
-// at least its count). OpenMesh sizes its buffers from them and loops over them without checking
-// the end of the file: "OFF\n4000000000 4000000000 0" ran past `timeout 20`. Binary OFF is left to
-// OpenMesh.
-void checkOffCounts(const std::string& path, const std::string& bytes);
-
-// After reading an ASCII OFF: the file holds at least the numbers that the vertices and faces
-// OpenMesh returned need (three per vertex, one count plus the indices per face).
-void checkOffLength(const std::string& path, const std::string& bytes, std::size_t verticesRead,
-                    const std::vector<std::vector<int>>& facesRead);
 
 }  // namespace eikon

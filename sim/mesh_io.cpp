@@ -16,6 +16,10 @@
 #include "core/error.h"
 #include "core/printable.h"
 #include "sim/mesh_file_checks.h"
+#include "sim/obj_face_lines.h"
+#include "sim/off_ascii.h"
+#include "sim/off_binary.h"
+#include "sim/off_header.h"
 #include "sim/openmesh_face_recorder.h"
 #include "sim/openmesh_messages.h"
 
@@ -98,7 +102,15 @@ LoadedMesh loadMesh(const std::string& path) {
     if (bytes.empty()) throw Error(path, "empty file");
     PlyHeader ply;
     if (ext == ".ply") ply = checkPlyFile(path, bytes);
-    if (ext == ".off") checkOffCounts(path, bytes);
+    OffHeader off;
+    if (ext == ".off") {
+        off = readOffHeader(bytes);
+        if (off.binary)
+            checkBinaryOff(path, bytes, off);
+        else if (off.readable)  // otherwise OpenMesh refuses it, and says so
+            checkAsciiOff(path, bytes, off);
+    }
+    if (ext == ".obj") checkObjFaceLines(path, bytes);
     if (ext == ".stl") {
         if (isAsciiStl(bytes))
             checkVertexLines(path, bytes, "vertex");
@@ -130,7 +142,6 @@ LoadedMesh loadMesh(const std::string& path) {
         }
     }
     if (ext == ".obj") checkObjVertices(path, bytes, read.points.size());
-    if (ext == ".off") checkOffLength(path, bytes, read.points.size(), read.faces);
     if (read.faces.empty())
         throw Error(path, "no faces (" + std::to_string(read.points.size()) +
                               " vertices): not a surface mesh, or not a " + formatName(ext) +

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/printable.h"
 #include "core/scene.h"
+#include "support/test_paths.h"
 
 namespace {
 
@@ -25,6 +26,21 @@ std::string errorOf(const std::string& text) {
         eikon::parseScene(text, "smoke.json");
     } catch (const eikon::Error& e) {
         return e.what();
+    }
+    FAIL("expected an eikon::Error");
+    return {};
+}
+
+// The error loading the fuzzing regression input `name` (tests/fuzz/regressions/scene/), as
+// eikon render loads a scene; it must be one printable line.
+std::string regressionError(const std::string& name) {
+    const std::string path = eikon::test::sourcePath("tests/fuzz/regressions/scene/" + name);
+    try {
+        eikon::loadScene(path);
+    } catch (const eikon::Error& e) {
+        INFO(e.what());
+        CHECK_FALSE(eikon::hasControlCharacter(e.what()));
+        return std::string(e.what()).substr(path.size());
     }
     FAIL("expected an eikon::Error");
     return {};
@@ -65,11 +81,9 @@ TEST_CASE("control characters in scene strings are refused at their pointer", "[
     CHECK(
         errorOf(sceneWith(R"("output": {"directory": "out\u001b[2J"})")) ==
         R"(smoke.json:/output/directory: expected a string without control characters, got "out\u001b[2J")");
-    // Keys are echoed escaped.
+    // Keys are echoed escaped, in the reason and in the pointer.
     CHECK(errorOf(sceneWith(R"("ren\u0007der": 1)"))
-              .rfind("smoke.json:/ren\x07"
-                     "der: unknown key 'ren\\x07der'",
-                     0) == 0);
+              .rfind("smoke.json:/ren\\x07der: unknown key 'ren\\x07der'", 0) == 0);
 }
 
 TEST_CASE("voxels too small for OpenVDB or float precision are refused when read",
@@ -101,4 +115,29 @@ TEST_CASE("voxels too small for OpenVDB or float precision are refused when read
         sceneWith(
             R"("volume": {"bounds": {"min": [0, 0, 0], "max": [0.01, 0.01, 0.01]}, "resolution": 64})"),
         "smoke.json"));
+}
+
+TEST_CASE("a key with control characters is escaped in the JSON pointer too", "[scene][json]") {
+    // tests/fuzz/regressions/scene/key_with_tab.json (found by fuzz_scene): the reason quoted the
+    // key escaped, but the pointer in where() carried the raw tab; a line end there split the
+    // one-line message.
+    CHECK(regressionError("key_with_tab.json").rfind(":/volume/\\t: unknown key '\\t'", 0) == 0);
+
+    const std::string line = errorOf(sceneWith(R"("camera": {"look_\nat": [0, 0, 0]})"));
+    INFO(line);
+    CHECK_FALSE(eikon::hasControlCharacter(line));
+    CHECK(line.rfind("smoke.json:/camera/look_\\nat: ", 0) == 0);
+
+    // A long key is cut in the pointer as in the reason.
+    const std::string longKey = errorOf(R"({"volume": {")" + std::string(300, 'k') + R"(": 1}})");
+    CHECK(longKey.rfind("smoke.json:/volume/" + std::string(80, 'k') + "...: ", 0) == 0);
+}
+
+TEST_CASE("a value quoted in a message has DEL escaped too", "[scene][json]") {
+    // JSON's escapes cover the control characters below 0x20; DEL (0x7f) was quoted raw
+    // (tests/fuzz/regressions/scene/string_with_del.json, found by fuzz_scene).
+    CHECK(regressionError("string_with_del.json").find("got \"\\x7f\"") != std::string::npos);
+    CHECK(
+        errorOf(sceneWith(R"("output": {"directory": "\u007fout"})")) ==
+        R"(smoke.json:/output/directory: expected a string without control characters, got "\x7fout")");
 }

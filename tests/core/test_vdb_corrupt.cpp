@@ -184,3 +184,95 @@ TEST_CASE("Corrupt VDB: 200 seeded mutations of the tree end in success or one e
     }
     CHECK(errors > 0);
 }
+
+TEST_CASE(
+    "Corrupt VDB: two grids that are instances of each other are an error, not a stack "
+    "overflow",
+    "[vdb][vdb-corrupt]") {
+    // tests/fuzz/regressions/vdb/instance_cycle.vdb: grid 'b' instances 'a' as OpenVDB wrote it,
+    // and 'a' was made an instance of 'b' (its descriptor's parent name set, offsets shifted).
+    // Following the parents recursed until the stack ran out (SIGSEGV) before the reader
+    // refused an instance of an instance.
+    const std::string path = test::sourcePath("tests/fuzz/regressions/vdb/instance_cycle.vdb");
+    CHECK(errorOf(path) ==
+          path +
+              ": grid 'a' could not be read; the file is truncated or corrupt (its "
+              "instance parent grid 'b' is an instance itself)");
+}
+
+TEST_CASE("Corrupt VDB: a name's length is checked before OpenVDB allocates it",
+          "[vdb][vdb-corrupt]") {
+    // OpenVDB's readString makes a string of the stated length before reading it: a grid
+    // descriptor's name length of 3.2 GB (tests/fuzz/regressions/vdb/descriptor_name_length.vdb,
+    // found by fuzz_vdb) and a transform's map type name asked for that much memory.
+    const std::string regression =
+        test::sourcePath("tests/fuzz/regressions/vdb/descriptor_name_length.vdb");
+    CHECK(errorOf(regression)
+              .find(": the grid directory could not be read; the file is truncated "
+                    "or corrupt (a grid") != std::string::npos);
+
+    const std::string dir = scratchDir("vdb_corrupt_names");
+    Bytes name = houdiniVel();
+    put<std::uint32_t>(name, 124, 0xfffffff0u);  // the descriptor's "vel"
+    CHECK(errorOf(write(dir, "name.vdb", name)) ==
+          dir +
+              "/name.vdb: the grid directory could not be read; the file is truncated or corrupt "
+              "(a grid name needs 4294967280 bytes but 117556 remain at byte 128)");
+    Bytes map = houdiniVel();
+    put<std::uint32_t>(map, 813, 0xfffffff0u);  // "UniformScaleTranslateMap"
+    CHECK(errorOf(write(dir, "map.vdb", map)) ==
+          dir +
+              "/map.vdb: grid 'vel' could not be read; the file is truncated or corrupt (the "
+              "transform's map type needs 4294967280 bytes but 116867 remain at byte 817)");
+}
+
+TEST_CASE("Grids whose bytes the reader cannot check are skipped by name, not read",
+          "[vdb][vdb-corrupt]") {
+    // A point grid's Blosc block size went to OpenVDB unchecked and asked for 10^17 bytes
+    // (tests/fuzz/regressions/vdb/point_grid_blosc_size.vdb, found by fuzz_vdb). Point grids, and
+    // every grid of a file older than format 222, are now listed but not decoded.
+    const VdbFileInfo points = inspectVdb(test::sourcePath("tests/fuzz/corpus/vdb/points.vdb"));
+    REQUIRE(points.grids.size() == 2);
+    for (const GridInfo& g : points.grids) {
+        INFO(g.name);
+        CHECK(g.readable == (g.name == "density"));
+        if (g.name == "points")
+            CHECK(g.problem ==
+                  "grid 'points' has type Tree_ptdataidx32_5_4_3, whose bytes this reader cannot "
+                  "check (it reads float, double, integer, vector, bool and mask grids)");
+    }
+    const std::string regression =
+        test::sourcePath("tests/fuzz/regressions/vdb/point_grid_blosc_size.vdb");
+    try {
+        inspectVdb(regression);
+        FieldRegistry fields;
+        importVdb(regression, fields);
+    } catch (const Error& e) {
+        CHECK(e.where() == regression);
+    }
+
+    Bytes old = houdiniVel();
+    put<std::uint32_t>(old, 8, 219);  // the file format version (220 and 221 add a header field)
+    const std::string path = write(scratchDir("vdb_old_format"), "old.vdb", old);
+    const VdbFileInfo info = inspectVdb(path);
+    REQUIRE(info.grids.size() == 1);
+    CHECK_FALSE(info.grids[0].readable);
+    CHECK(info.grids[0].problem ==
+          "grid 'vel' is stored in VDB file format 219, older than the 222 this reader can check");
+    FieldRegistry fields;
+    CHECK_THROWS_AS(importVdb(path, fields), Error);
+}
+
+TEST_CASE("Corrupt VDB: the grid's metadata, not its descriptor, says whether values are half",
+          "[vdb][vdb-corrupt]") {
+    // OpenVDB reads the tree at the value size the grid's "is_saved_as_half_float" metadata says;
+    // the walk took the descriptor's "_HalfFloat" suffix. A file where the two disagree
+    // (tests/fuzz/regressions/vdb/half_flag_in_metadata.vdb, found by fuzz_vdb and minimized by
+    // libFuzzer) had its blocks walked at one size and read at the other: a Blosc byte count of
+    // 3.6e16 went to new[]. Now the walk follows the metadata, and the file is one error.
+    const std::string path =
+        test::sourcePath("tests/fuzz/regressions/vdb/half_flag_in_metadata.vdb");
+    const std::string message = errorOf(path);
+    CHECK(message.find("could not be read; the file is truncated or corrupt") != std::string::npos);
+    CHECK(message.find("bad_alloc") == std::string::npos);
+}

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/printable.h"
 #include "core/vdb_import.h"
 #include "core/vdb_info.h"
 #include "support/test_paths.h"
@@ -302,4 +303,70 @@ TEST_CASE("negative n is rejected: a material would map it below 1", "[vdb][bad-
           dir +
               "/n.vdb: grid 'n' (n) has 1 negative values (minimum -0.250000); n must be >= 0 (a "
               "material maps it to n = 1 + f·(ior − 1) >= 1)");
+}
+
+TEST_CASE("grid names and types from the file are escaped in errors and warnings",
+          "[vdb][bad-input]") {
+    // A grid name is the file's bytes: a terminal escape or a line end in one would break the
+    // one-line promise of eikon::Error (core/printable.h), so messages quote it escaped.
+    ensureOpenVdbInitialized();
+    const std::string dir = scratchDir("vdb_control_names");
+    auto check = [](const std::string& message, const std::string& part) {
+        INFO(message);
+        CHECK_FALSE(hasControlCharacter(message));
+        CHECK(message.find(part) != std::string::npos);
+    };
+
+    auto nan = openvdb::FloatGrid::create(0.0f);
+    nan->setName("smoke\x1b[2J\n");
+    nan->tree().setValue(openvdb::Coord(1, 2, 3), std::numeric_limits<float>::quiet_NaN());
+    openvdb::io::File(dir + "/nan.vdb").write({nan});
+    check(importError(dir + "/nan.vdb"), "grid 'smoke\\x1b[2J\\n' has 1 NaN/Inf values");
+
+    // "density.*" maps this name to the density field, which must not be negative.
+    auto negative = openvdb::FloatGrid::create(0.0f);
+    negative->setName("density.\r");
+    negative->tree().setValue(openvdb::Coord(0, 0, 0), -1.0f);
+    openvdb::io::File(dir + "/negative.vdb").write({negative});
+    check(importError(dir + "/negative.vdb"), "grid 'density.\\r' (density) has 1 negative");
+
+    auto flags = openvdb::Int32Grid::create(0);
+    flags->setName("flags\a");
+    flags->tree().setValue(openvdb::Coord(0, 0, 0), 1);
+    openvdb::io::File(dir + "/flags.vdb").write({flags});
+    check(importError(dir + "/flags.vdb"), "(skipped: flags\\x07: int32 grid");
+
+    // A stored type no OpenVDB registers, with a control character in it (same length).
+    auto density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->tree().setValue(openvdb::Coord(1, 1, 1), 0.5f);
+    auto other = openvdb::FloatGrid::create(0.0f);
+    other->setName("other");
+    const std::string path = dir + "/type.vdb";
+    openvdb::io::File(path).write({other, density});
+    std::string bytes;
+    {
+        std::ifstream in(path, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    const size_t type = bytes.find("Tree_float_5_4_3", bytes.find("other"));
+    REQUIRE(type != std::string::npos);
+    bytes.replace(type, 16,
+                  "Tree_fl\x1b"
+                  "at_5_4_3");
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+    ScopedWarningCapture warnings;
+    FieldRegistry fields;
+    importVdb(path, fields);
+    REQUIRE(warnings.warnings().size() == 1);
+    check(warnings.warnings()[0], "skipped grid other: grid type Tree_fl\\x1bat_5_4_3 is not");
+
+    // The fields a missing one is looked up among may be such names too.
+    try {
+        fields.set("n\t", fields.get("density").grid, "test");
+        fields.get("absent");
+        FAIL("no error");
+    } catch (const Error& e) {
+        check(e.what(), "fields present: density, n\\t)");
+    }
 }

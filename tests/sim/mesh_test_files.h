@@ -113,6 +113,28 @@ inline std::string plyBinaryBytes(const PolygonMesh& m) {
     return out;
 }
 
+// Binary OFF as OpenMesh reads it: the first line, three little-endian 32-bit counts, per vertex
+// x, y, z as float then `extraVertexBytes` zero bytes (what a C, N or ST prefix adds), per face
+// its count and 32-bit indices.
+inline std::string offBinaryBytes(const PolygonMesh& m, const std::string& firstLine = "OFF BINARY",
+                                  std::size_t extraVertexBytes = 0) {
+    std::string out = firstLine + "\n";
+    appendBytes(out, std::uint32_t(m.positions.size()));
+    appendBytes(out, std::uint32_t(m.faces.size()));
+    appendBytes(out, std::uint32_t(0));
+    for (const glm::vec3& p : m.positions) {
+        appendBytes(out, p.x);
+        appendBytes(out, p.y);
+        appendBytes(out, p.z);
+        out.append(extraVertexBytes, '\0');
+    }
+    for (const std::vector<int>& f : m.faces) {
+        appendBytes(out, std::uint32_t(f.size()));
+        for (int v : f) appendBytes(out, std::uint32_t(v));
+    }
+    return out;
+}
+
 // STL keeps no indices: each triangle of the fan-triangulated polygons is written with its
 // corners' positions.
 inline std::vector<std::vector<glm::vec3>> stlTriangles(const PolygonMesh& m) {
