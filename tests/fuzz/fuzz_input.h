@@ -95,7 +95,9 @@ inline void quietLibraries() {
 // (scripts/fuzz.sh): an input whose estimate is over it gets eikon's one-line refusal, as it would
 // on a machine of that size, and one the estimate lets through but that takes more than 2 GB is a
 // finding (the estimate was wrong).
-inline void limitMemory() { setMemoryLimit(1024.0 * 1024.0 * 1024.0, "the fuzz targets' limit"); }
+inline void limitMemory() {
+    setMemoryLimit(1024.0 * 1024.0 * 1024.0, "the fuzz targets' limit");
+}
 
 // Runs one reader call; see the top of this file for what counts as a finding.
 template <class ReadFn>
