@@ -31,8 +31,8 @@ struct Focus {
     double position = 0.0;      // distance below the centre of the run of narrowest slices
 };
 
-// Slices from the one that holds the ball's lowest point down to the box: the least RMS radius, and the
-// middle of the run of slices within 0.3 voxel of it (a focus is several slices long).
+// Slices from the one that holds the ball's lowest point down to the box: the least RMS radius, and
+// the middle of the run of slices within 0.3 voxel of it (a focus is several slices long).
 Focus focusBelow(const PhotonResultCpu& t, glm::vec3 centre) {
     const int top = int(std::floor((double(centre.y) - kRadius + 1.0) / kVoxel));
     std::vector<double> rms(size_t(top) + 1, 1e30);
@@ -72,9 +72,9 @@ TEST_CASE("a sharp glass ball (falloff 0) focuses a paraxial beam at nR / (2(n -
             const glm::vec3 centre = glm::vec3(0.0f, 0.3f, 0.0f) + offset * float(kVoxel);
             const auto ball =
                 eikon::test::sphereSource("n", centre, kRadius, 1.0f, 0.0f, float(kVoxel));
-            const auto light = PhotonScene::spotLight(
-                centre + glm::vec3(0.0f, distance, 0.0f), glm::vec3(0.0f, -1.0f, 0.0f),
-                glm::vec3(1.0f), coneDeg, 0.05f * coneDeg);
+            const auto light = PhotonScene::spotLight(centre + glm::vec3(0.0f, distance, 0.0f),
+                                                      glm::vec3(0.0f, -1.0f, 0.0f), glm::vec3(1.0f),
+                                                      coneDeg, 0.05f * coneDeg);
             const PhotonScene scene(kRes, ior, glm::vec3(0.0f), light, [&](glm::vec3 p) {
                 return float(eikon::proceduralValue(ball, glm::dvec3(p)));
             });
@@ -84,10 +84,10 @@ TEST_CASE("a sharp glass ball (falloff 0) focuses a paraxial beam at nR / (2(n -
             const double f = double(ior) * kRadius / (2.0 * (double(ior) - 1.0));
             const double expected = 1.0 / (1.0 / f - 1.0 / double(distance));
             const double error = (focus.position - expected) / kVoxel;
-            INFO("n " << ior << ", centre offset " << offset.x << " " << offset.y << " "
-                      << offset.z << " voxel: narrowest " << focus.narrowestRms
-                      << " voxels RMS, focus " << focus.position << " below the centre, expected "
-                      << expected << ": " << error << " voxels");
+            INFO("n " << ior << ", centre offset " << offset.x << " " << offset.y << " " << offset.z
+                      << " voxel: narrowest " << focus.narrowestRms << " voxels RMS, focus "
+                      << focus.position << " below the centre, expected " << expected << ": "
+                      << error << " voxels");
             // Measured: narrowest 0 and 0.40 voxel RMS for n = 1.5, 0 and 0.51 for n = 2 (the
             // step: 4.1-7.5); focus −0.55 and +0.35 voxel from the formula for n = 1.5, +0.26
             // and +1.16 for n = 2, whose focus lies on the ball's back surface (0.2 voxel beyond
