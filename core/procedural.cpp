@@ -131,9 +131,8 @@ double proceduralValue(const SourceSpec& src, glm::dvec3 p) {
     const double d = signedDistance(src, p);
     // The Luneburg profile falls to 0 at the surface already: no step to average.
     if (src.profile == SourceProfile::Luneburg) return d <= 0.0 ? profileAt(src, p) : 0.0;
-    const double w =
-        edgeWeight(d, double(src.falloff), double(src.voxelSize),
-                   src.type == SourceType::Sphere ? double(src.radius) : 0.0);
+    const double w = edgeWeight(d, double(src.falloff), double(src.voxelSize),
+                                src.type == SourceType::Sphere ? double(src.radius) : 0.0);
     return w > 0.0 ? profileAt(src, p) * w : 0.0;
 }
 

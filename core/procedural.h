@@ -39,11 +39,11 @@ double proceduralValue(const SourceSpec& src, glm::dvec3 p);
 // `falloff` outside, a step when falloff is 0) averaged over the voxel's width along the
 // surface's normal, at signed distance d of the voxel's centre (negative inside); on a sphere of
 // radius `sphereRadius` (0: a flat surface) d first grows by the surface's mean bend away from its
-// tangent plane across the voxel, h²/(12 r), so that a sphere's field keeps its volume. With falloff 0 on a flat surface it is the voxel's coverage,
-// clamp(1/2 − d/h, 0, 1). The field then has its 1/2 level on the surface to a fraction of a
-// voxel and ∇n normal to it. Sampling the step at voxel centres instead terraced the surface: a
-// glass ball's caps were flat for several voxels with ∇n straight down, and the ball did not
-// focus (issue 15).
+// tangent plane across the voxel, h²/(12 r), so that a sphere's field keeps its volume. With
+// falloff 0 on a flat surface it is the voxel's coverage, clamp(1/2 − d/h, 0, 1). The field then
+// has its 1/2 level on the surface to a fraction of a voxel and ∇n normal to it. Sampling the step
+// at voxel centres instead terraced the surface: a glass ball's caps were flat for several voxels
+// with ∇n straight down, and the ball did not focus (issue 15).
 double edgeWeight(double d, double falloff, double h, double sphereRadius = 0.0);
 
 // The Luneburg profile's shape at radius r of a sphere of radius R: sqrt(2 − (r/R)²) − 1 for

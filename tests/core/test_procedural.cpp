@@ -174,8 +174,7 @@ TEST_CASE("ramp: linear along its axis inside, clamped then fading outside", "[p
     CHECK(proceduralValue(slab, {0.0, 0.0, 0.0}) == Approx(0.25f).epsilon(1e-6));
     // On the surface the voxel holds the mean of 1 over its inner half and of the ramp over its
     // outer half: 1 − h / (8 falloff); at the falloff's end, the ramp's last h/2: h / (8 falloff).
-    CHECK(proceduralValue(slab, {0.0, 0.5, 0.0}) ==
-          Approx(0.4 * (1.0 - 0.05 / 1.6)).epsilon(1e-6));
+    CHECK(proceduralValue(slab, {0.0, 0.5, 0.0}) == Approx(0.4 * (1.0 - 0.05 / 1.6)).epsilon(1e-6));
     CHECK(proceduralValue(slab, {0.0, 0.7, 0.0}) == Approx(0.4 * 0.05 / 1.6).epsilon(1e-6));
 }
 
