@@ -1,7 +1,7 @@
 // Issue 15, item 1: the simplest glass ball a user writes, a procedural sphere with the default
 // falloff 0, focuses. Its field is the voxels' coverage of the sphere (core/procedural.h,
 // edgeWeight); sampled as a step at the voxel centres it terraced the surface, the caps were flat
-// with ∇n straight down, and the beam's narrowest cross-section was 4-7.5 voxels RMS (measured
+// with ∇n straight down, and the beam's narrowest cross-section was 2.5-4.6 voxels RMS (measured
 // with the step for these cases): no focus. CPU twin (the GPU's photons equal it bit for bit:
 // test_photons_gpu.cpp).
 //
@@ -89,7 +89,7 @@ TEST_CASE("a sharp glass ball (falloff 0) focuses a paraxial beam at nR / (2(n -
                       << focus.position << " below the centre, expected " << expected << ": "
                       << error << " voxels");
             // Measured: narrowest 0 and 0.40 voxel RMS for n = 1.5, 0 and 0.51 for n = 2 (the
-            // step: 4.1-7.5); focus −0.55 and +0.35 voxel from the formula for n = 1.5, +0.26
+            // step: 2.5-4.6); focus −0.55 and +0.35 voxel from the formula for n = 1.5, +0.26
             // and +1.16 for n = 2, whose focus lies on the ball's back surface (0.2 voxel beyond
             // it), where the slices' half-voxel steps and the focus's depth weigh most.
             CHECK(focus.narrowestRms < 0.75);
