@@ -2,9 +2,17 @@
 
 #include <malloc.h>
 
+#include <cstddef>
+
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#if defined(__SANITIZE_ADDRESS__)
+// AddressSanitizer's allocator replaces malloc's, and mallinfo2 reads zeros there: ask it
+// (declared in compiler-rt's sanitizer/allocator_interface.h, which GCC does not ship).
+extern "C" std::size_t __sanitizer_get_current_allocated_bytes();
+#endif
 
 namespace eikon::app {
 
@@ -21,7 +29,9 @@ ProcessMemory readProcessMemory() {
         if (key == "VmHWM:") m.hwmKib = kib;
         if (key == "RssAnon:") m.rssAnonKib = kib;
     }
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
+#if defined(__SANITIZE_ADDRESS__)
+    m.heapInUseKib = std::int64_t(__sanitizer_get_current_allocated_bytes() / 1024);
+#elif defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
     const struct mallinfo2 info = mallinfo2();
     m.heapInUseKib = std::int64_t((info.uordblks + info.hblkhd) / 1024);
 #endif

@@ -1,6 +1,7 @@
 #pragma once
 // This process's memory as Linux reports it (/proc/self/status) and as glibc's allocator holds
-// it (mallinfo2), for `eikon bench soak`: a long run shows a leak as growth after its warm-up.
+// it (mallinfo2; AddressSanitizer's own count in an ASan build), for `eikon bench soak`: a long run
+// shows a leak as growth after its warm-up.
 #include <cstdint>
 
 namespace eikon::app {
