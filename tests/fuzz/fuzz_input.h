@@ -99,6 +99,12 @@ inline void limitMemory() {
     setMemoryLimit(1024.0 * 1024.0 * 1024.0, "the fuzz targets' limit");
 }
 
+// What every target's LLVMFuzzerInitialize does first.
+inline void setUpProcess() {
+    quietLibraries();
+    limitMemory();
+}
+
 // Runs one reader call; see the top of this file for what counts as a finding.
 template <class ReadFn>
 void readExpectingErrors(ReadFn read) {

@@ -7,8 +7,7 @@
 #include "sim/mesh_io.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    eikon::fuzz::quietLibraries();
-    eikon::fuzz::limitMemory();
+    eikon::fuzz::setUpProcess();
     return 0;
 }
 

@@ -6,8 +6,7 @@
 #include "fuzz_input.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    eikon::fuzz::quietLibraries();
-    eikon::fuzz::limitMemory();
+    eikon::fuzz::setUpProcess();
     return 0;
 }
 

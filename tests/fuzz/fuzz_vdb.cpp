@@ -12,8 +12,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
     // One thread: OpenVDB's reductions (active voxel count and bounds) start TBB workers whose
     // spinning, under ASan and on a busy machine, cost more than the work; inputs are tiny.
     static tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
-    eikon::fuzz::quietLibraries();
-    eikon::fuzz::limitMemory();
+    eikon::fuzz::setUpProcess();
     eikon::ensureOpenVdbInitialized();
     return 0;
 }
