@@ -151,6 +151,14 @@ MethodCase ballLensCase(int n) {
     addIndexField(c, kIor, [=](glm::vec3 x) {
         return std::clamp(0.5f - (glm::length(x - centre) - kRadius) / rim, 0.0f, 1.0f);
     });
+    c.index = [=](const glm::dvec3& x) {
+        const glm::dvec3 d = x - glm::dvec3(centre);
+        const double r = glm::length(d);
+        const double ramp = 0.5 - (r - double(kRadius)) / double(rim);
+        const double n = 1.0 + (double(kIor) - 1.0) * std::clamp(ramp, 0.0, 1.0);
+        if (ramp <= 0.0 || ramp >= 1.0 || !(r > 0.0)) return glm::dvec4(0.0, 0.0, 0.0, n);
+        return glm::dvec4(-(double(kIor) - 1.0) / double(rim) * d / r, n);
+    };
     c.scene.lights.push_back(beamDown(centre, kDistance, kRadius / 5.0f));
     c.error = [=](const CaseOutput& out) {
         const double h = double(out.volume.voxelSize().y);
@@ -178,6 +186,13 @@ MethodCase luneburgCase(int n) {
         const float r = glm::length(x - centre) / kRadius;
         return r < 1.0f ? std::sqrt(2.0f - r * r) - 1.0f : 0.0f;
     });
+    c.index = [=](const glm::dvec3& x) {
+        const glm::dvec3 d = (x - glm::dvec3(centre)) / double(kRadius);
+        const double r2 = glm::dot(d, d);
+        if (r2 >= 1.0) return glm::dvec4(0.0, 0.0, 0.0, 1.0);
+        const double n = std::sqrt(2.0 - r2);
+        return glm::dvec4(-d / (double(kRadius) * n), n);
+    };
     c.scene.lights.push_back(directionalDown());
     c.error = [=](const CaseOutput& out) {
         const double h = double(out.volume.voxelSize().y);
@@ -189,35 +204,46 @@ MethodCase luneburgCase(int n) {
     return c;
 }
 
-// n² linear across the beam, n² = 1.44 + 0.3 (x + 1): a narrow beam sent straight down bends
-// toward +x along the parabola x = x0 + p0 τ + (∇n²/4) τ² (dτ = ds/n). Error: the fluence
-// centroid on the bottom layer against the power-weighted mean of the closed-form exit points
-// of the beam's rays, in voxels.
-MethodCase linearN2Case(int n) {
-    MethodCase c = boxCase("linear_n2", n);
-    constexpr double kN0 = 1.2, kAlpha = 0.3;
+// A narrow beam sent straight down from `kDistance` above the top face at x = beamX through a
+// medium whose n depends on x alone: p_y = n dy/ds is constant along every ray, so the exit
+// height fixes τ, and exitX(x0, p0x, τ) is the closed form of x(τ) (dτ = ds/n). Error: the
+// fluence centroid on the bottom layer against the power-weighted mean of the closed-form exit
+// points of the beam's rays, in voxels.
+struct BentBeam {
+    std::function<double(double)> index;                  // n(x)
+    std::function<double(double)> slope;                  // dn/dx
+    std::function<double(double, double, double)> exitX;  // x(τ) from x0, p0x
+    double beamX = 0.0;
+};
+
+MethodCase bentBeamCase(const std::string& name, int n, const std::string& closedForm,
+                        const BentBeam& beam) {
+    MethodCase c = boxCase(name, n);
     constexpr float kDistance = 40.0f, kBeam = 0.1f;
-    auto index = [=](double x) { return std::sqrt(kN0 * kN0 + kAlpha * (x + 1.0)); };
-    c.closedForm = "exit point on the parabola x0 + p0 t + (grad n^2/4) t^2";
+    c.closedForm = closedForm;
     c.errorUnit = "voxels";
     addFog(c, glm::vec3(0.0f), glm::vec3(kFaintScattering));
-    addIndexField(c, 2.0f, [=](glm::vec3 x) { return float(index(double(x.x))) - 1.0f; });
-    c.scene.lights.push_back(beamDown(glm::vec3(0.0f, 1.0f, 0.0f), kDistance, kBeam));
+    addIndexField(c, 2.0f, [=](glm::vec3 x) { return float(beam.index(double(x.x))) - 1.0f; });
+    c.index = [=](const glm::dvec3& x) {
+        return glm::dvec4(beam.slope(x.x), 0.0, 0.0, beam.index(x.x));
+    };
+    const glm::vec3 top(float(beam.beamX), 1.0f, 0.0f);
+    c.scene.lights.push_back(beamDown(top, kDistance, kBeam));
     c.error = [=](const CaseOutput& out) {
         const RenderVolume& v = out.volume;
         const double h = double(v.voxelSize().y);
         const double yBottom = -1.0 + 0.5 * h;  // the bottom layer's centres
         // The rays through a grid over the beam's disk at the top face, from the source.
-        const glm::dvec3 source(0.0, 1.0 + double(kDistance), 0.0);
+        const glm::dvec3 source(beam.beamX, 1.0 + double(kDistance), 0.0);
         double sum = 0.0;
         int rays = 0;
         for (int a = -20; a <= 20; ++a)
             for (int b = -20; b <= 20; ++b) {
-                const glm::dvec3 x0(kBeam * a / 20.0, 1.0, kBeam * b / 20.0);
-                if (x0.x * x0.x + x0.z * x0.z > double(kBeam) * kBeam) continue;
-                const glm::dvec3 p0 = index(x0.x) * glm::normalize(x0 - source);
-                const double tau = (yBottom - 1.0) / p0.y;  // p_y is constant: ∇n² ⟂ y
-                sum += x0.x + p0.x * tau + kAlpha / 4.0 * tau * tau;
+                const glm::dvec3 x0(beam.beamX + kBeam * a / 20.0, 1.0, kBeam * b / 20.0);
+                if ((a * a + b * b) > 400) continue;
+                const glm::dvec3 p0 = beam.index(x0.x) * glm::normalize(x0 - source);
+                const double tau = (yBottom - 1.0) / p0.y;  // p_y is constant: ∇n ⟂ y
+                sum += beam.exitX(x0.x, p0.x, tau);
                 ++rays;
             }
         const double expected = sum / rays;
@@ -232,6 +258,40 @@ MethodCase linearN2Case(int n) {
         return std::abs(moment / weight - expected) / h;
     };
     return c;
+}
+
+// n² linear across the beam, n² = 1.44 + 0.3 (x + 1): the beam bends toward +x along the
+// parabola x = x0 + p0 τ + (∇n²/4) τ².
+MethodCase linearN2Case(int n) {
+    constexpr double kN0 = 1.2, kAlpha = 0.3;
+    BentBeam beam;
+    beam.index = [=](double x) { return std::sqrt(kN0 * kN0 + kAlpha * (x + 1.0)); };
+    beam.slope = [=](double x) {
+        return kAlpha / (2.0 * std::sqrt(kN0 * kN0 + kAlpha * (x + 1.0)));
+    };
+    beam.exitX = [=](double x0, double p0, double tau) {
+        return x0 + p0 * tau + kAlpha / 4.0 * tau * tau;
+    };
+    return bentBeamCase("linear_n2", n, "exit point on the parabola x0 + p0 t + (grad n^2/4) t^2",
+                        beam);
+}
+
+// A graded-index (GRIN) slab, n² = n0² (1 − α² x²), n0 = 1.5, α = 0.6 (n from 1.2 at the faces
+// to 1.5 on the axis): rays oscillate about x = 0 as x'' = −ω² x in τ, ω = n0 α, so a beam sent
+// down at x = 0.5 exits on x0 cos ωτ + (p0/ω) sin ωτ, having swung 0.35 units toward the axis.
+MethodCase grinCase(int n) {
+    constexpr double kN0 = 1.5, kAlpha = 0.6, kOmega = kN0 * kAlpha;
+    BentBeam beam;
+    beam.index = [=](double x) { return kN0 * std::sqrt(1.0 - kAlpha * kAlpha * x * x); };
+    beam.slope = [=](double x) {
+        return -kN0 * kAlpha * kAlpha * x / std::sqrt(1.0 - kAlpha * kAlpha * x * x);
+    };
+    beam.exitX = [=](double x0, double p0, double tau) {
+        return x0 * std::cos(kOmega * tau) + p0 / kOmega * std::sin(kOmega * tau);
+    };
+    beam.beamX = 0.5;
+    return bentBeamCase(
+        "grin", n, "exit point on x0 cos(wt) + (p0/w) sin(wt), n^2 = n0^2 (1 - a^2 x^2)", beam);
 }
 
 // A glass ball in absorbing, scattering fog under a spot light: every bit of power that enters
@@ -270,11 +330,9 @@ struct NamedCase {
     const char* name;
     CaseMaker make;
 };
-const NamedCase kCases[] = {{"slab", slabCase},
-                            {"ball_lens", ballLensCase},
-                            {"luneburg", luneburgCase},
-                            {"linear_n2", linearN2Case},
-                            {"energy", energyCase}};
+const NamedCase kCases[] = {{"slab", slabCase},         {"ball_lens", ballLensCase},
+                            {"luneburg", luneburgCase}, {"linear_n2", linearN2Case},
+                            {"grin", grinCase},         {"energy", energyCase}};
 
 }  // namespace
 
@@ -284,12 +342,16 @@ std::vector<std::string> methodCaseNames() {
     return names;
 }
 
+std::vector<std::string> refractingCaseNames() {
+    return {"ball_lens", "luneburg", "linear_n2", "grin"};
+}
+
 std::vector<MethodCase> methodCases(int resolution, const std::vector<std::string>& only) {
     for (const std::string& name : only) {
         const std::vector<std::string> all = methodCaseNames();
         if (std::find(all.begin(), all.end(), name) == all.end())
             throw Error("--cases", "no case '" + name + "' (slab, ball_lens, luneburg, " +
-                                       "linear_n2, energy)");
+                                       "linear_n2, grin, energy)");
     }
     const int odd = resolution | 1;
     std::vector<MethodCase> cases;

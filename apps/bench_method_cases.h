@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/dense_grid.h"
+#include "core/exact_ray.h"
 #include "core/scene.h"
 #include "render/light_transport.h"
 
@@ -36,12 +37,18 @@ struct MethodCase {
     // The error of one output; NaN where the method shows nothing to measure (a lens that does
     // not focus), which the report writes as such instead of a number.
     std::function<double(const CaseOutput&)> error;
+    // The continuous index field the "n" grid samples ((∇n, n) at a world point), for the exact
+    // traces of `eikon bench integrators`; empty where the case has no refraction.
+    IndexField index;
 };
 
 // The suite at `resolution` voxels per edge (made odd, so that the optical axis runs through a
 // column of voxel centres), or only the cases named in `only` when it is not empty. Throws
 // eikon::Error naming an unknown case.
 std::vector<MethodCase> methodCases(int resolution, const std::vector<std::string>& only = {});
+// The cases whose light bends (those with a continuous index field): ball_lens, luneburg,
+// linear_n2, grin.
+std::vector<std::string> refractingCaseNames();
 // The names of every case, in order.
 std::vector<std::string> methodCaseNames();
 

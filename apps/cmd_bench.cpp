@@ -12,6 +12,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     addBenchVoxelizeCommand(*bench, exitCode);
     addBenchArapCommand(*bench, exitCode);
     addBenchMethodsCommand(*bench, exitCode);
+    addBenchIntegratorsCommand(*bench, exitCode);
     addBenchSoakCommand(*bench, exitCode);
 }
 

@@ -18,6 +18,7 @@ void addBenchAdvectionCommand(CLI::App& bench, int& exitCode);
 void addBenchVoxelizeCommand(CLI::App& bench, int& exitCode);
 void addBenchArapCommand(CLI::App& bench, int& exitCode);
 void addBenchMethodsCommand(CLI::App& bench, int& exitCode);
+void addBenchIntegratorsCommand(CLI::App& bench, int& exitCode);
 void addBenchSoakCommand(CLI::App& bench, int& exitCode);
 
 }  // namespace eikon::app

@@ -549,6 +549,9 @@ RenderSettings readRender(const Value& value) {
     if (auto step = object.optional("step_voxels")) {
         render.stepVoxels = step->floatNumber(Range::greaterThan(0.0));
     }
+    if (auto integrator = object.optional("integrator")) {
+        render.integrator = rayIntegratorNamed(integrator->choice(rayIntegratorNames()));
+    }
     if (auto cutoff = object.optional("min_transmittance")) {
         render.minTransmittance = cutoff->floatNumber(Range::closedOpen(0.0, 1.0));
     }

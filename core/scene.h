@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/bounds.h"
+#include "core/ray_integrator.h"
 #include "core/simulation_spec.h"
 
 namespace eikon {
@@ -273,7 +274,9 @@ enum class ToneCurve { Linear, Filmic };
 struct RenderSettings {
     int width = 640;
     int height = 480;
-    float stepVoxels = 1.0f;         // view-ray step, in voxels of the render volume
+    float stepVoxels = 1.0f;  // view-ray step, in voxels of the render volume
+    // How curved view rays step through the ray equation (core/ray_integrator.h).
+    RayIntegrator integrator = RayIntegrator::Rk4;
     float minTransmittance = 1e-3f;  // a view ray stops when every channel is below this
     float exposure = 0.0f;           // stops; the tone map multiplies by 2^exposure
     ToneCurve toneCurve = ToneCurve::Filmic;

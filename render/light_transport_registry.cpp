@@ -53,6 +53,20 @@ std::unique_ptr<LightTransport> readSection(const Scene& scene, const TransportD
     return chosen;
 }
 
+// The photons' settings in `eikon bench methods`: the photon count (coarse, default, fine), and
+// the integrators other than the default (RK4) at the default steps (`eikon bench integrators`
+// measures them photon by photon at three steps).
+std::vector<std::pair<std::string, std::string>> photonBenchSettings() {
+    std::vector<std::pair<std::string, std::string>> settings = {
+        {"coarse", R"({"per_side": 64})"},
+        {"default", "{}"},
+        {"fine", R"({"per_side": 256, "min_step_voxels": 0.5})"}};
+    for (const std::string& integrator : rayIntegratorNames())
+        if (integrator != rayIntegratorName(PhotonSettings{}.integrator))
+            settings.push_back({integrator, R"({"integrator": ")" + integrator + R"("})"});
+    return settings;
+}
+
 }  // namespace
 
 const std::vector<LightTransportMethod>& lightTransportMethods() {
@@ -63,9 +77,7 @@ const std::vector<LightTransportMethod>& lightTransportMethods() {
          [](const json::Value* s, const TransportDevice& d) {
              return make<PhotonTransport>(readPhotonTransportSettings(s), d);
          },
-         {{"coarse", R"({"per_side": 64})"},
-          {"default", "{}"},
-          {"fine", R"({"per_side": 256, "min_step_voxels": 0.5})"}}},
+         photonBenchSettings()},
         {"light_volumes",
          "single scattering of straight light: a transmittance volume per light, swept or "
          "marched, or marched at every view sample",

@@ -141,7 +141,7 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     bool refracts = false;
     for (const MaterialSpec& mat : scene.materials) refracts = refracts || mat.ior != 1.0f;
     p.pipeline = glm::ivec4(0);
-    shared::setCurvedRays(p, refracts);
+    shared::setCurvedRays(p, refracts ? static_cast<int>(scene.render.integrator) : -1);
     packReceivers(scene, volume, p);
     return setup;
 }

@@ -5,6 +5,8 @@
 // between the two sides.
 #include <cstddef>
 
+#include "core/ray_integrator.h"
+
 #include "shaders/shared/gpu_types.h"
 
 EK_NAMESPACE_BEGIN
@@ -40,6 +42,7 @@ struct VolumeAccessCpu {
 #include "shaders/shared/sampling.h"
 #include "shaders/shared/optics.h"
 #include "shaders/shared/receivers.h"
+#include "shaders/shared/ray_equation.h"
     // clang-format on
 };
 
@@ -68,3 +71,10 @@ struct LightKernelCpu : VolumeAccessCpu {
 };
 
 EK_NAMESPACE_END
+
+// The scene's integrator names are the shaders' EK_RAY_* values (core/ray_integrator.h).
+static_assert(int(eikon::RayIntegrator::Euler) == EK_RAY_EULER &&
+                  int(eikon::RayIntegrator::Midpoint) == EK_RAY_MIDPOINT &&
+                  int(eikon::RayIntegrator::Rk4) == EK_RAY_RK4 &&
+                  int(eikon::RayIntegrator::Verlet) == EK_RAY_VERLET,
+              "core/ray_integrator.h and shaders/shared/ray_equation.h disagree");

@@ -4,7 +4,12 @@ shape per light-transport method and one colour per named setting, the Pareto fr
 point is both faster and more accurate) drawn as a line. Points without an error (a method that
 shows no focus, or keeps no energy account) are listed under their panel instead of plotted.
 
-Usage: /usr/bin/python3 scripts/plot_methods_bench.py TSV [PNG]   (PNG defaults to TSV's name)
+Also plots `eikon bench integrators`'s TSV, whose methods are the integrators and settings the
+steps; COLUMN picks the error plotted (default "error": there the integration error, against the
+exact trace through the sampled field; "path_error": against the continuous field).
+
+Usage: /usr/bin/python3 scripts/plot_methods_bench.py TSV [PNG [COLUMN]]   (PNG defaults to TSV's
+name)
 Needs matplotlib (Debian: python3-matplotlib, installed by scripts/install-deps.sh).
 """
 import csv
@@ -19,6 +24,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 MARKERS = ["o", "s", "^", "D", "v", "P", "X"]  # per method, in the TSV's order
 COLOURS = {"coarse": "tab:orange", "default": "tab:blue", "fine": "tab:green"}
+# Settings without a colour of their own (integrators, steps) take these in order of appearance.
+MORE_COLOURS = ["tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan",
+                "tab:gray"]
 # Errors of exactly zero (or below it) sit on this floor of the log axis.
 FLOOR = 1e-12
 
@@ -33,16 +41,24 @@ def pareto(points):
 
 
 def main():
-    if len(sys.argv) not in (2, 3):
-        sys.exit("usage: plot_methods_bench.py TSV [PNG]")
+    if len(sys.argv) not in (2, 3, 4):
+        sys.exit("usage: plot_methods_bench.py TSV [PNG [COLUMN]]")
     tsv = sys.argv[1]
-    png = sys.argv[2] if len(sys.argv) == 3 else os.path.splitext(tsv)[0] + ".png"
+    png = sys.argv[2] if len(sys.argv) >= 3 else os.path.splitext(tsv)[0] + ".png"
+    column = sys.argv[3] if len(sys.argv) == 4 else "error"
     with open(tsv, newline="") as f:
         rows = list(csv.DictReader(f, delimiter="\t"))
     if not rows:
         sys.exit(f"eikon: {tsv}: no rows")
+    if column not in rows[0]:
+        sys.exit(f"eikon: {tsv}: no column '{column}'")
     cases = list(dict.fromkeys(r["case"] for r in rows))
     methods = list(dict.fromkeys(r["method"] for r in rows))
+    for setting in dict.fromkeys(r["setting"] for r in rows):
+        if setting not in COLOURS:
+            COLOURS[setting] = MORE_COLOURS[len([c for c in COLOURS if c not in
+                                                 ("coarse", "default", "fine")]) %
+                                            len(MORE_COLOURS)]
     cols = min(3, len(cases))
     lines = math.ceil(len(cases) / cols)
     fig, axes = plt.subplots(lines, cols, figsize=(5.2 * cols, 4.4 * lines), squeeze=False)
@@ -51,7 +67,7 @@ def main():
         unit = mine[0]["error_unit"]
         points, missing = [], []
         for r in mine:
-            ms, err = float(r["ms"]), float(r["error"])
+            ms, err = float(r["ms"]), float(r[column])
             label = f"{r['method']} {r['setting']}"
             if math.isnan(err):
                 missing.append(label)
@@ -69,7 +85,7 @@ def main():
         ax.set_yscale("log")
         ax.set_title(f"{case} (n = {mine[0]['resolution']})")
         ax.set_xlabel("ms (CPU twin, method + the stages it needs)")
-        ax.set_ylabel(f"error ({unit})")
+        ax.set_ylabel(f"{column.replace('_', ' ')} ({unit})")
         ax.grid(True, which="both", alpha=0.3)
         if missing:
             ax.text(0.02, 0.02, "no value: " + ", ".join(missing), transform=ax.transAxes,

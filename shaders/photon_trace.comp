@@ -163,6 +163,7 @@ uniform uint seed;
 uniform uint frame;
 uniform float fluxThreshold;
 uniform float minStep;
+uniform int integrator;   // EK_RAY_* (shared/ray_equation.h)
 uniform int roundSteps;   // steps of this round (render/transport/photons/photon_tracing.h photonRoundSteps)
 uniform bool lastRound;   // the step cap: photons still active after this round are cut
 uniform bool fromList;    // false: round 0, photons[photonFirst ..]; true: list listIn
@@ -250,7 +251,7 @@ void main() {
     if (int(p.position.w) != EK_PHOTON_ACTIVE) return;
     vec3 extinguished = fromList ? photonExtinguished[i].xyz : vec3(0.0f);
     const bool stop = rounds[EK_ROUND_STOP] != 0u;
-    if (!stop) marchPhoton(p, minStep, roundSteps, extinguished);
+    if (!stop) marchPhoton(p, minStep, integrator, roundSteps, extinguished);
     const bool still = int(p.position.w) == EK_PHOTON_ACTIVE;
     if (still && !stop && !lastRound) {
         // Compaction: the photon's state stays in its slot (downloads keep index order); only its

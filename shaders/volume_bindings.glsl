@@ -76,3 +76,4 @@ vec4 filterFluenceDirectionVolume(vec3 indexPos) {
 #include "shared/sampling.h"
 #include "shared/optics.h"
 #include "shared/receivers.h"
+#include "shared/ray_equation.h"

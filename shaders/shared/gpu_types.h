@@ -82,10 +82,11 @@ struct GpuViewParams {
     ivec4 resolution;    // xyz voxels; w: material count (materialCount)
     ivec4 image;         // x, y: pixels; z: light count (lightCount); w: EK_SHADOWS_* (shadowMode)
     vec4 background;     // rgb radiance; w: a ray stops below it (minTransmittance)
-    // The packed flags, read through the accessors below. x: 1 = curved view rays through the ∇n
-    // volume, 0 = straight (curvedRays); y: 1 = in-scattering read from the fluence volumes
-    // (readsFluence); z: bit l set = light l's light reaches the medium through the fluence
-    // volumes, not through its light volume (lightInFluence); w: receiver count (receiverCount).
+    // The packed flags, read through the accessors below. x: 0 = straight view rays, 1 + EK_RAY_*
+    // = curved through the ∇n volume with that integrator (curvedRays, viewIntegrator); y: 1 =
+    // in-scattering read from the fluence volumes (readsFluence); z: bit l set = light l's light
+    // reaches the medium through the fluence volumes, not through its light volume
+    // (lightInFluence); w: receiver count (receiverCount).
     ivec4 pipeline;
     // The environment (shaders/shared/environment.h). x: EK_ENVIRONMENT_* (environmentType); y, z:
     // the image's width and height in texels (environmentWidth, environmentHeight); w: 0.
@@ -109,6 +110,9 @@ struct GpuViewParams {
 #ifdef __cplusplus
 inline bool curvedRays(const GpuViewParams& p) {
     return p.pipeline.x != 0;  // view rays bend through the ∇n volume
+}
+inline int viewIntegrator(const GpuViewParams& p) {
+    return p.pipeline.x - 1;  // EK_RAY_* (shaders/shared/ray_equation.h), for curved rays
 }
 inline bool readsFluence(const GpuViewParams& p) {
     return p.pipeline.y != 0;  // in-scattering read from the fluence volumes
@@ -170,6 +174,7 @@ inline float environmentRotationSin(const GpuViewParams& p) {
 }
 #else
 #define curvedRays(p) ((p).pipeline.x != 0)
+#define viewIntegrator(p) ((p).pipeline.x - 1)
 #define readsFluence(p) ((p).pipeline.y != 0)
 #define lightInFluence(p, l) (((p).pipeline.z & (1 << (l))) != 0)
 #define anyLightInFluence(p) ((p).pipeline.z != 0)
@@ -281,8 +286,9 @@ inline void setShadowMode(GpuViewParams& p, int mode) {
 inline void setMinTransmittance(GpuViewParams& p, float t) {
     p.background.w = t;
 }
-inline void setCurvedRays(GpuViewParams& p, bool on) {
-    p.pipeline.x = on ? 1 : 0;
+// Curved view rays stepped by `integrator` (EK_RAY_*), or straight ones (integrator < 0).
+inline void setCurvedRays(GpuViewParams& p, int integrator) {
+    p.pipeline.x = integrator >= 0 ? 1 + integrator : 0;
 }
 inline void setReadsFluence(GpuViewParams& p, bool on) {
     p.pipeline.y = on ? 1 : 0;

@@ -6,8 +6,8 @@
 // inside a kernel struct body (for the functions, which then see the kernel's members); GLSL
 // includes it once at file scope and gets both.
 //
-// Needs from the includer for the functions: sampling.h and optics.h (params, fetchVolume with
-// the ∇n volume at EK_GRADIENT_SLOT), and
+// Needs from the includer for the functions: sampling.h, optics.h and ray_equation.h (params,
+// fetchVolume with the ∇n volume at EK_GRADIENT_SLOT), and
 //   vec4 fetchOctree(ivec3 voxel)   the octree volume (render/refraction_volume.h): x = level,
 //                                   y = Δs_max in scene units, z, w = n range;
 //   void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir)
@@ -401,24 +401,26 @@ void depositOnReceiver(int r, vec3 x, vec3 flux) {
 }
 
 // One adaptive step of an active photon (§1 step 5): Δs = clamp(Δs_octree, minStep, Δs_max), with
-// Δs_max winning where the two conflict (it is the accuracy the octree asks for there);
-// x += (Δs/n) v, v += Δs ∇n (rayStep's update, n and ∇n at x); the flux decays by e^(−κ|Δx|)
-// with κ at the segment's midpoint, and the segment is deposited. A segment that leaves the box
-// is cut at the face and the photon escapes. extinguished gets the flux the step lost. Returns
-// the photon's new state (EK_PHOTON_*).
-int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, EK_INOUT(vec3) extinguished) {
+// Δs_max winning where the two conflict (it is the accuracy the octree asks for there), taken by
+// `integrator` (ray_equation.h; EK_RAY_EULER is the paper's x += (Δs/n) v, v += Δs ∇n); the flux
+// decays by e^(−κ|Δx|) with κ at the chord's midpoint, and the chord is deposited. A segment that
+// leaves the box is cut at the face and the photon escapes. extinguished gets the flux the step
+// lost. Returns the photon's new state (EK_PHOTON_*).
+int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, int integrator,
+               EK_INOUT(vec3) extinguished) {
     const vec3 x = vec3(photon.position);
     const vec3 v = vec3(photon.direction);
-    const vec4 g = sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(x));
     const float speed = length(v);  // |v| = n on the exact path; drifts a little in the march
-    if (!(speed > 1e-6f) || !(g.w > 1e-6f)) return EK_PHOTON_DROPPED;
+    const vec4 g0 = rayStepStart(integrator, x, v);
+    if (!(speed > 1e-6f) || !(g0.w > 1e-6f)) return EK_PHOTON_DROPPED;
     const vec3 dir = v / speed;
     float maxStep;
     const float leafDistance = octreeLeafDistance(x, dir, maxStep);
     // The leaf distance is in world length; |Δx| = Δs |v| / n converts it to the ray parameter.
-    const float ds = min(max(leafDistance * g.w / speed, minStep), maxStep);
-    vec3 next = x + (ds / g.w) * v;
-    const vec3 vNext = v + ds * vec3(g);
+    const float ds = min(max(leafDistance * g0.w / speed, minStep), maxStep);
+    vec3 next = x;
+    vec3 vNext = v;
+    if (!rayAdvance(integrator, next, vNext, ds, g0)) return EK_PHOTON_DROPPED;
     const vec3 delta = next - x;
     float s = length(delta);
     if (!(s > 0.0f) || !(s < 3.0e38f)) return EK_PHOTON_DROPPED;
@@ -426,6 +428,10 @@ int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, EK_INOUT(vec3) extingu
     const float tExit = intersectVolume(x, segmentDir).y;
     const bool leaves = tExit <= s;
     if (leaves) {
+        // v at the face, not at the step's end up to a step beyond it: the part of the step's
+        // turn that happens inside (the chord's fraction; a whole step's turn is up to |∇n|/n Δs).
+        const float inside = max(tExit, 0.0f) / s;
+        vNext = v + inside * (vNext - v);
         s = max(tExit, 0.0f);
         next = x + segmentDir * s;
     }
@@ -463,19 +469,19 @@ int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, EK_INOUT(vec3) extingu
 // count, flux and its threshold) and in `extinguished`, so a march split into rounds of
 // marchPhoton takes exactly the steps of one uninterrupted march
 // (render/transport/photons/photon_tracing.h).
-void marchPhoton(EK_INOUT(GpuPhoton) photon, float minStep, int steps,
+void marchPhoton(EK_INOUT(GpuPhoton) photon, float minStep, int integrator, int steps,
                  EK_INOUT(vec3) extinguished) {
     int state = int(photon.position.w);
     for (int i = 0; i < steps && state == EK_PHOTON_ACTIVE; ++i)
-        state = photonStep(photon, minStep, extinguished);
+        state = photonStep(photon, minStep, integrator, extinguished);
     photon.position.w = float(state);
 }
 
 // Marches a photon until it escapes, lands on a receiver, is dropped, or has taken maxSteps steps
 // (EK_PHOTON_CUT); the state is written to position.w. extinguished gets the flux lost on the way.
-void tracePhoton(EK_INOUT(GpuPhoton) photon, float minStep, int maxSteps,
+void tracePhoton(EK_INOUT(GpuPhoton) photon, float minStep, int integrator, int maxSteps,
                  EK_INOUT(vec3) extinguished) {
-    marchPhoton(photon, minStep, maxSteps, extinguished);
+    marchPhoton(photon, minStep, integrator, maxSteps, extinguished);
     if (int(photon.position.w) == EK_PHOTON_ACTIVE) photon.position.w = float(EK_PHOTON_CUT);
 }
 

@@ -4,7 +4,7 @@
 // taken from the light volume (light_volume.h) or, as reference, marched toward the light from
 // every sample (like vdb_render). Rays that leave the volume see environmentRadiance
 // (environment.h); rays that reach a receiver (receivers.h) stop there and see its diffuse
-// reflection. Needs optics.h, receivers.h, environment.h and, from the includer,
+// reflection. Needs optics.h, receivers.h, ray_equation.h, environment.h and, from the includer,
 // `vec4 fetchReceiverTexel(int index)`: the irradiance (rgb) of a texel of the receiver map.
 
 // Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0.
@@ -128,16 +128,9 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
     return true;
 }
 
-// One step of the ray equation d/ds(n dx/ds) = ∇n (Sun et al. 2008, eqs. 4-5):
-// x += (Δs/n) v, v += Δs ∇n, with v = n dx/ds and n, ∇n from the gradient volume at x.
-void rayStep(EK_INOUT(vec3) x, EK_INOUT(vec3) v, float ds) {
-    const vec4 g = sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(x));
-    x += (ds / g.w) * v;
-    v += ds * vec3(g);
-}
-
-// Traces a curved ray from `entry` (on or inside the volume) with unit direction `dir`, one
-// rayStep of length h per iteration, until it leaves the volume; the last step is cut at the
+// Traces a curved ray from `entry` (on or inside the volume) with unit direction `dir`, one step
+// of the ray equation of length h per iteration (viewIntegrator, ray_equation.h), until it
+// leaves the volume or the medium goes degenerate; the last step is cut at the
 // face. Calls accumulateStep on every segment when `shade`. Returns the exit point; exitDir
 // gets the direction the ray leaves with.
 vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
@@ -153,7 +146,9 @@ vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
     for (int i = 0; i < maxSteps; ++i) {
         vec3 next = x;
         vec3 vNext = v;
-        rayStep(next, vNext, h);
+        if (!rayAdvance(viewIntegrator(params), next, vNext, h,
+                        rayStepStart(viewIntegrator(params), x, v)))
+            break;  // a degenerate n; nothing more to trace
         const vec3 delta = next - x;
         float s = length(delta);
         if (!(s > 0.0f)) break;  // a degenerate n; nothing more to trace
@@ -161,6 +156,9 @@ vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
         const float tExit = intersectVolume(x, segmentDir).y;
         const bool leaves = tExit < s;
         if (leaves) {
+            // v at the face, not at the step's end beyond it (photons.h, photonStep).
+            const float inside = max(tExit, 0.0f) / s;
+            vNext = v + inside * (vNext - v);
             s = max(tExit, 0.0f);
             next = x + segmentDir * s;
         }

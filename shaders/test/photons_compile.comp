@@ -28,6 +28,6 @@ void main() {
     const int i = int(gl_GlobalInvocationID.x);
     GpuPhoton p = generateDirectionalPhoton(0, 8, i, 1u, 0u, 1e-4f);
     vec3 extinguished = vec3(0.0f);
-    tracePhoton(p, 0.1f, 100, extinguished);
+    tracePhoton(p, 0.1f, i % 4, 100, extinguished);  // every integrator (EK_RAY_*)
     photons[i] = p;
 }

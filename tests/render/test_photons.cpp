@@ -257,11 +257,13 @@ TEST_CASE("photon flux is conserved: emitted = escaped + extinguished + dropped"
 TEST_CASE("photons in a linear n^2 gradient follow the closed-form parabola", "[photons]") {
     const glm::vec3 d = glm::normalize(glm::vec3(0.15f, -1.0f, -0.25f));
     // Worst exit-point error, in voxels, of 16 × 16 photons at minimum step `step` (voxels).
-    auto worstError = [&](float step, const OctreeSettings& os, int64_t& steps) {
+    auto worstError = [&](float step, const OctreeSettings& os, int64_t& steps,
+                          RayIntegrator integrator) {
         PhotonScene s(32, 2.0f, glm::vec3(0.0f), d, gradientField, glm::vec3(1.0f), os);
         PhotonSettings settings;
         settings.photonsPerSide = 16;
         settings.minStepVoxels = step;
+        settings.integrator = integrator;
         const PhotonResultCpu r = s.trace(settings);
         steps = r.steps;
         int checked = 0;
@@ -274,22 +276,37 @@ TEST_CASE("photons in a linear n^2 gradient follow the closed-form parabola", "[
     // Default settings: the octree labels this medium level 1 (2-voxel nodes, ε ≤ range < ε'),
     // so steps run from the 1-voxel minimum to a node's width.
     int64_t steps = 0;
-    const double atDefault = worstError(1.0f, OctreeSettings{}, steps);
+    const double atDefault = worstError(1.0f, OctreeSettings{}, steps, PhotonSettings{}.integrator);
     INFO("default settings: " << steps << " steps, worst exit error " << atDefault << " voxels");
     CHECK(atDefault < 0.25);
 
     // Convergence: with ε = ε' = 0 every voxel is a level-0 leaf capped at the minimum step, so
-    // the march takes exactly the minimum step and the error must shrink with it.
-    double previous = 1e9;
+    // the march takes exactly the minimum step, and the paper's Euler step's error must shrink
+    // with it.
+    double previous = 1e9, eulerAtOne = 0.0;
     for (float step : {1.0f, 0.5f, 0.25f}) {
         OctreeSettings os;
         os.epsilon = os.epsilonPrime = 0.0f;
         os.minStepVoxels = step;
-        const double worst = worstError(step, os, steps);
-        INFO("min step " << step << " voxels: " << steps << " steps, worst exit error " << worst
-                         << " voxels");
+        const double worst = worstError(step, os, steps, RayIntegrator::Euler);
+        INFO("Euler, min step " << step << " voxels: " << steps << " steps, worst exit error "
+                                << worst << " voxels");
         CHECK(worst < previous);
         previous = worst;
+        if (step == 1.0f) eulerAtOne = worst;
+    }
+    // The second-order integrators at the 1-voxel step: the parabola is their exact path where
+    // ∇n² is constant, so what is left is the sampled ∇n's error against the closed form (measured
+    // 0.0142-0.0144 voxel, what the default settings show too; Euler's 0.075).
+    for (RayIntegrator integrator :
+         {RayIntegrator::Midpoint, RayIntegrator::Rk4, RayIntegrator::Verlet}) {
+        OctreeSettings os;
+        os.epsilon = os.epsilonPrime = 0.0f;
+        const double worst = worstError(1.0f, os, steps, integrator);
+        INFO(rayIntegratorName(integrator) << ", min step 1 voxel: worst exit error " << worst
+                                           << " voxels, Euler's " << eulerAtOne);
+        CHECK(worst < 0.02);
+        CHECK(worst < 0.25 * eulerAtOne);
     }
 }
 
@@ -359,8 +376,11 @@ TEST_CASE("photon results are bit-identical for any thread count; seeds change o
     }
 }
 
-// Checks a hard case's trace: every photon ends (escaped or dropped, none cut short), nothing
-// is NaN or infinite, and the energy balances.
+// Checks a hard case's trace: every photon ends (escaped or dropped) or is cut by the stop rule
+// (PhotonSettings::stopFraction: at most that fraction of them, the few a voxel staircase traps
+// by total internal reflection for longer than the rest take to leave; RK4 and Verlet, which do
+// not leak energy as Euler does, keep them circling), nothing is NaN or infinite, and the energy
+// balances.
 static void checkBoundedAndBalanced(const PhotonResultCpu& r) {
     int ended = 0;
     bool finite = true;
@@ -372,8 +392,9 @@ static void checkBoundedAndBalanced(const PhotonResultCpu& r) {
     INFO(r.photonsTraced << " photons, " << ended << " ended, " << r.photonsCut << " cut, "
                          << r.steps << " steps, imbalance " << maxRelativeImbalance(r.totals));
     CHECK(r.photonsTraced > 0);
-    CHECK(ended == r.photonsTraced);
-    CHECK(r.photonsCut == 0);
+    CHECK(ended + r.photonsCut == r.photonsTraced);
+    CHECK(double(r.photonsCut) <
+          std::ceil(double(PhotonSettings{}.stopFraction) * double(r.photonsTraced)));
     CHECK(finite);
     CHECK(allFinite(r.radiance));
     CHECK(allFinite(r.direction));

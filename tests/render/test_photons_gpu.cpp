@@ -54,16 +54,23 @@ TEST_CASE("GPU photons equal the CPU twin: straight n = 1 and a linear n^2 gradi
 TEST_CASE("GPU photons equal the CPU twin with refraction and extinction", "[photons][gpu]") {
     auto context = createHeadlessContext();
     GpuRun gpu;
-    SECTION("energy balance: a soft n = 1.5 ball, absorbing, some photons dropped") {
+    SECTION(
+        "energy balance: a soft n = 1.5 ball, absorbing, some photons dropped; each "
+        "integrator") {
         const GpuPhotonScene s(32, 1.5f, glm::vec3(4.0f, 6.0f, 10.0f),
                                glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f)), ball,
                                glm::vec3(1.0f, 0.7f, 0.4f));
-        PhotonSettings settings;
-        settings.photonsPerSide = 64;
-        settings.fluxThreshold = 0.05f;
-        const PhotonResultCpu r = gpu.trace(s, settings);
-        requireIdentical(r, s.trace(settings));
-        CHECK(r.totals.dropped.z > 0.0);
+        for (RayIntegrator integrator : {RayIntegrator::Euler, RayIntegrator::Midpoint,
+                                         RayIntegrator::Rk4, RayIntegrator::Verlet}) {
+            INFO(rayIntegratorName(integrator));
+            PhotonSettings settings;
+            settings.photonsPerSide = 64;
+            settings.fluxThreshold = 0.05f;
+            settings.integrator = integrator;
+            const PhotonResultCpu r = gpu.trace(s, settings);
+            requireIdentical(r, s.trace(settings));
+            CHECK(r.totals.dropped.z > 0.0);
+        }
     }
     SECTION("a sharp n = 2.4 ball under grazing light") {
         for (glm::vec3 d : {glm::vec3(1.0f, -0.002f, 0.0f), glm::vec3(0.3f, -1.0f, 0.001f)}) {

@@ -26,6 +26,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/dense_grid.h"
+#include "core/ray_integrator.h"
 #include "render/refraction_volume.h"
 #include "render/view_params.h"
 
@@ -38,8 +39,10 @@ EK_NAMESPACE_END
 namespace eikon {
 
 struct PhotonSettings {
-    int photonsPerSide = 128;     // N: N×N photons per light-space grid (PhotonLightPlan)
-    float minStepVoxels = 1.0f;   // Δs_min, in voxels of the smallest edge
+    int photonsPerSide = 128;    // N: N×N photons per light-space grid (PhotonLightPlan)
+    float minStepVoxels = 1.0f;  // Δs_min, in voxels of the smallest edge
+    // How a photon steps through the ray equation (shaders/shared/ray_equation.h).
+    RayIntegrator integrator = RayIntegrator::Rk4;
     float fluxThreshold = 1e-4f;  // drop a photon below this fraction of its initial flux
     int maxSteps = 0;             // per photon; 0: 16 crossings of the volume at Δs_min
     // The march runs in rounds of this many steps of every active photon; after each round the
@@ -116,6 +119,13 @@ int photonRoundSteps(const PhotonPlan& plan, int round);
 // The stop rule: the march ends once fewer than this many photons are active after a round
 // (stopFraction × traced, rounded up, so that "fewer than" compares integers exactly); 0: never.
 int64_t photonStopCount(const PhotonPlan& plan, int64_t photonsTraced);
+
+// Every photon of the plan in its starting state (step 4), light after light in index order: what
+// traceLightPhotonsCpu marches, for tests and benches that compare paths with exact ones. A
+// photon starts with v = n·d, n read from `gradient` (the ∇n volume) where it enters.
+std::vector<shared::GpuPhoton> generatePhotonsCpu(const ViewSetup& setup,
+                                                  const RefractionVolumeCpu& gradient,
+                                                  const PhotonSettings& settings = {});
 
 // Traces the photons of every light of setup (PhotonPlan) through the media: slotGrids are the
 // field volumes (as for computeIndexGradientCpu), gradient and octree the refraction volumes.

@@ -119,6 +119,26 @@ int64_t photonStopCount(const PhotonPlan& plan, int64_t photonsTraced) {
     return int64_t(std::ceil(double(plan.stopFraction) * double(photonsTraced)));
 }
 
+std::vector<shared::GpuPhoton> generatePhotonsCpu(const ViewSetup& setup,
+                                                  const RefractionVolumeCpu& gradient,
+                                                  const PhotonSettings& settings) {
+    shared::PhotonKernelCpu kernel{{setup.params}};
+    kernel.gradient = gradient.data();
+    const PhotonPlan plan = planPhotons(setup, settings);
+    std::vector<shared::GpuPhoton> photons(plan.photons);
+    for (const PhotonLightPlan& light : plan.lights) {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, light.count, 256),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                              for (size_t i = r.begin(); i != r.end(); ++i)
+                                  photons[light.first + i] = kernel.generatePhoton(
+                                      light.light, light.grid, plan.side, int(i),
+                                      glm::uint(settings.seed), glm::uint(settings.frame),
+                                      settings.fluxThreshold);
+                          });
+    }
+    return photons;
+}
+
 PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
                                      const std::vector<const DenseGrid*>& slotGrids,
                                      const RefractionVolumeCpu& gradient,
@@ -134,20 +154,11 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
     result.resolution = plan.resolution;
     const size_t voxels = plan.voxels;
     const float minStep = plan.minStep;
+    const int integrator = static_cast<int>(settings.integrator);
 
     // Step 4: generate every light's photons; the emitted power, summed in index order, sets the
     // fixed-point scales before anything is deposited.
-    result.photons.resize(plan.photons);
-    for (const PhotonLightPlan& light : plan.lights) {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, light.count, 256),
-                          [&](const tbb::blocked_range<size_t>& r) {
-                              for (size_t i = r.begin(); i != r.end(); ++i)
-                                  result.photons[light.first + i] = kernel.generatePhoton(
-                                      light.light, light.grid, plan.side, int(i),
-                                      glm::uint(settings.seed), glm::uint(settings.frame),
-                                      settings.fluxThreshold);
-                          });
-    }
+    result.photons = generatePhotonsCpu(setup, gradient, settings);
     for (const shared::GpuPhoton& p : result.photons) {
         if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
         result.totals.emitted += glm::dvec3(glm::vec3(p.flux));
@@ -216,7 +227,9 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
                               for (size_t k = r.begin(); k != r.end(); ++k) {
                                   const uint32_t i = active[k];
                                   shared::GpuPhoton& p = result.photons[i];
-                                  if (!stop) kernel.marchPhoton(p, minStep, steps, extinguished[i]);
+                                  if (!stop)
+                                      kernel.marchPhoton(p, minStep, integrator, steps,
+                                                         extinguished[i]);
                                   const bool still = int(p.position.w) == EK_PHOTON_ACTIVE;
                                   if (still && !stop && !last) continue;
                                   if (still) p.position.w = float(EK_PHOTON_CUT);

@@ -206,6 +206,7 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     trace_->use();
     trace_->setFloat("minStep", plan.minStep);
+    trace_->setInt("integrator", static_cast<int>(settings.integrator));
     trace_->setInt("listCapacity", int(photonCount));
     const glm::dvec4& s = host.fixedPointScale;
     glUniform4d(trace_->uniformLocation("depositScale"), s.x, s.y, s.z, s.w);

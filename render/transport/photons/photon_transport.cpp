@@ -34,12 +34,16 @@ PhotonTransportSettings readPhotonTransportSettings(const json::Value* section) 
         s.trace.photonsPerSide = static_cast<int>(side->integer(1, kMaxPhotonsPerSide));
     if (auto step = object.optional("min_step_voxels"))
         s.trace.minStepVoxels = step->floatNumber(Range::greaterThan(0.0));
+    if (auto integrator = object.optional("integrator"))
+        s.trace.integrator = rayIntegratorNamed(integrator->choice(rayIntegratorNames()));
     if (auto threshold = object.optional("flux_threshold"))
         s.trace.fluxThreshold = threshold->floatNumber(Range::closedOpen(0.0, 1.0));
     if (auto fraction = object.optional("stop_fraction"))
         s.trace.stopFraction = fraction->floatNumber(Range::closedOpen(0.0, 1.0));
     if (auto steps = object.optional("steps_per_round"))
         s.trace.stepsPerRound = static_cast<int>(steps->integer(1, kMaxStepsPerRound));
+    if (auto step = object.optional("max_step_voxels"))
+        s.maxStepVoxels = step->floatNumber(Range::greaterThan(0.0));
     if (auto kappa = object.optional("kappa_tolerance"))
         s.kappaTolerance = kappa->floatNumber(Range::atLeast(0.0));
     object.finish();
@@ -58,6 +62,11 @@ TransportNeeds PhotonTransport::needs() const {
     n.gradient = true;
     n.octree = true;
     n.octreeSettings.kappaTolerance = settings_.kappaTolerance;
+    // Near strong variation of n the octree caps steps at the photons' own minimum step, so that
+    // min_step_voxels sets the step there (with a cap of 1 voxel, a smaller minimum step could
+    // only shorten steps the octree already cut at a node's face).
+    n.octreeSettings.minStepVoxels = settings_.trace.minStepVoxels;
+    n.octreeSettings.stepLimitVoxels = settings_.maxStepVoxels;
     return n;
 }
 
@@ -96,10 +105,11 @@ std::vector<unsigned char> PhotonTransport::cacheKey(
         appendBytes(key, &p.receivers[r].texels, sizeof(glm::ivec4));
     }
     // Every member is 4 bytes: the struct has no padding to carry stale bytes into the key.
-    static_assert(sizeof(PhotonSettings) == 8 * 4, "PhotonSettings gained padding or a member");
+    static_assert(sizeof(PhotonSettings) == 9 * 4, "PhotonSettings gained padding or a member");
     const PhotonSettings trace = traceSettings();
     appendBytes(key, &trace, sizeof(trace));
     appendBytes(key, &settings_.kappaTolerance, sizeof(settings_.kappaTolerance));
+    appendBytes(key, &settings_.maxStepVoxels, sizeof(settings_.maxStepVoxels));
     return key;
 }
 

@@ -23,6 +23,10 @@ struct PhotonTransportSettings {
     // (BENCHMARKS.md): 65x less image error than 0 on the glass sphere in fog, for 2.4x the
     // photon steps.
     float kappaTolerance = 0.1f;
+    // The longest step where n varies a little (OctreeSettings::stepLimitVoxels, the paper's user
+    // limit); where it is flat within ε steps are unlimited, and near strong variation they are
+    // min_step_voxels.
+    float maxStepVoxels = 8.0f;
     // The section's file and JSON pointer, for the memory check's message; empty: the scene's
     // render.light_transport.
     std::string where;
