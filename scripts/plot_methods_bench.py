@@ -27,6 +27,12 @@ COLOURS = {"coarse": "tab:orange", "default": "tab:blue", "fine": "tab:green"}
 # Settings without a colour of their own (integrators, steps) take these in order of appearance.
 MORE_COLOURS = ["tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan",
                 "tab:gray"]
+# Per TSV kind: `eikon bench methods` (False) or `eikon bench integrators` (True).
+TITLE = {False: "eikon bench methods: {column} against time per light-transport method and setting",
+         True: "eikon bench integrators: {column} against the photon march's time per integrator "
+               "and step"}
+XLABEL = {False: "ms (CPU twin, method + the stages it needs)",
+          True: "ms (CPU twin, the photon march)"}
 # Errors of exactly zero (or below it) sit on this floor of the log axis.
 FLOOR = 1e-12
 
@@ -52,6 +58,7 @@ def main():
         sys.exit(f"eikon: {tsv}: no rows")
     if column not in rows[0]:
         sys.exit(f"eikon: {tsv}: no column '{column}'")
+    integrators = "path_error" in rows[0]  # `eikon bench integrators`'s TSV
     cases = list(dict.fromkeys(r["case"] for r in rows))
     methods = list(dict.fromkeys(r["method"] for r in rows))
     for setting in dict.fromkeys(r["setting"] for r in rows):
@@ -84,7 +91,7 @@ def main():
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_title(f"{case} (n = {mine[0]['resolution']})")
-        ax.set_xlabel("ms (CPU twin, method + the stages it needs)")
+        ax.set_xlabel(XLABEL[integrators])
         ax.set_ylabel(f"{column.replace('_', ' ')} ({unit})")
         ax.grid(True, which="both", alpha=0.3)
         if missing:
@@ -93,7 +100,7 @@ def main():
         ax.legend(fontsize=7, loc="best", framealpha=0.6)
     for ax in list(axes.flat)[len(cases):]:
         ax.axis("off")
-    fig.suptitle("eikon bench methods: error against time per light-transport method and setting")
+    fig.suptitle(TITLE[integrators].format(column=column.replace("_", " ")))
     fig.tight_layout()
     fig.savefig(png, dpi=110)
     print(f"wrote {png}")
