@@ -15,9 +15,11 @@
 //                    is sampled trilinearly, so its force has kinks at every voxel face and RK4
 //                    is of second order there (BENCHMARKS.md measures it). Four evaluations.
 //   EK_RAY_VERLET    Störmer–Verlet in τ, drift-kick-drift: x½ = x + (Δτ/2) v, v += Δτ F(x½),
-//                    x += (Δτ/2) v. Second order, symplectic (H does not drift: |v| stays n over
-//                    long paths, trapped rays keep circling), time-reversible, and one evaluation
-//                    per step, at x½: its Δτ comes from |v| (= n on the ray) instead of n at x.
+//                    x += (Δτ/2) v. Second order and one evaluation per step, at x½: its Δτ comes
+//                    from |v| (= n on the ray) instead of n at x. With a fixed Δτ and a force that
+//                    is a gradient it is symplectic and time-reversible (no secular drift of H);
+//                    here Δτ varies with |v| and the trilinear ∇n volume is a gradient only to
+//                    O(h²), so those hold only approximately.
 
 #define EK_RAY_EULER 0
 #define EK_RAY_MIDPOINT 1

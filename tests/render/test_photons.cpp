@@ -378,9 +378,9 @@ TEST_CASE("photon results are bit-identical for any thread count; seeds change o
 
 // Checks a hard case's trace: every photon ends (escaped or dropped) or is cut by the stop rule
 // (PhotonSettings::stopFraction: at most that fraction of them, the few a voxel staircase traps
-// by total internal reflection for longer than the rest take to leave; RK4 and Verlet, which do
-// not leak energy as Euler does, keep them circling), nothing is NaN or infinite, and the energy
-// balances.
+// by total internal reflection for longer than the rest take to leave; since photons step with
+// RK4, 1-4 per case are still circling when the rule fires, where Euler's steps let them out),
+// nothing is NaN or infinite, and the energy balances.
 static void checkBoundedAndBalanced(const PhotonResultCpu& r) {
     int ended = 0;
     bool finite = true;
