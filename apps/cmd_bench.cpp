@@ -13,6 +13,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     addBenchArapCommand(*bench, exitCode);
     addBenchMethodsCommand(*bench, exitCode);
     addBenchIntegratorsCommand(*bench, exitCode);
+    addBenchCausticCommand(*bench, exitCode);
     addBenchSoakCommand(*bench, exitCode);
 }
 

@@ -19,6 +19,7 @@ void addBenchVoxelizeCommand(CLI::App& bench, int& exitCode);
 void addBenchArapCommand(CLI::App& bench, int& exitCode);
 void addBenchMethodsCommand(CLI::App& bench, int& exitCode);
 void addBenchIntegratorsCommand(CLI::App& bench, int& exitCode);
+void addBenchCausticCommand(CLI::App& bench, int& exitCode);
 void addBenchSoakCommand(CLI::App& bench, int& exitCode);
 
 }  // namespace eikon::app
