@@ -50,8 +50,8 @@ std::string sceneJson(double d, const BenchCausticOptions& o) {
       << R"(], "max": [)" << kHalf << ", " << (ny - 2) * h << ", " << kHalf
       << R"(]}, "resolution": [)" << o.resolution << ", " << ny << ", " << o.resolution << R"(]},
  "sources": [{"type": "sphere", "field": "n", "center": [0, )"
-      << d << R"(, 0], "radius": 1, "value": 1, "falloff": )" << o.falloff
-      << R"(, "voxel_size": )" << h << R"(}],
+      << d << R"(, 0], "radius": 1, "value": 1, "falloff": )" << o.falloff << R"(, "voxel_size": )"
+      << h << R"(}],
  "materials": [{"name": "glass", "field": "n", "ior": 1.5}],
  "lights": [{"type": "point", "position": [0, 100, 0], "intensity": 1}],
  "receivers": [{"type": "plane", "axis": "y", "position": 0, "albedo": [1, 1, 1]}],
@@ -85,9 +85,10 @@ int runBenchCaustic(BenchCausticOptions o) {
 
     std::printf("# eikon bench caustic: a glass ball's floor caustic, as POV-Ray's focus sweep\n");
     printBenchHeader(stdout, o.threads);
-    std::printf("# sphere R 1, n 1.5, falloff %g, centre D above the floor; point light at 100; "
-                "%d voxels across the 2.4-unit floor square; %d^2 photons; CPU twin\n",
-                double(o.falloff), o.resolution, o.perSide);
+    std::printf(
+        "# sphere R 1, n 1.5, falloff %g, centre D above the floor; point light at 100; "
+        "%d voxels across the 2.4-unit floor square; %d^2 photons; CPU twin\n",
+        double(o.falloff), o.resolution, o.perSide);
     std::printf("%-6s | %9s | %7s %7s | %s\n", "D", "ms", "width", "height", "map");
     for (const double d : distances) {
         char name[64];
@@ -110,14 +111,16 @@ int runBenchCaustic(BenchCausticOptions o) {
             throw Error(scenePath, "unexpected receiver map size " + std::to_string(map.size()));
         const std::string mapPath = o.out + "/" + name + ".f32";
         std::ofstream file(mapPath, std::ios::binary);
-        for (const glm::vec4& t : map) file.write(reinterpret_cast<const char*>(&t.y), sizeof(float));
+        for (const glm::vec4& t : map)
+            file.write(reinterpret_cast<const char*>(&t.y), sizeof(float));
         if (!file) throw Error(mapPath, "cannot write the map");
         std::printf("%-6.3g | %9.1f | %7d %7d | %s\n", d, ms, width, width, mapPath.c_str());
         std::fflush(stdout);
     }
-    std::printf("# compare: /usr/bin/python3 scripts/compare_caustic.py --eikon %s [--povray "
-                "DIR]\n",
-                o.out.c_str());
+    std::printf(
+        "# compare: /usr/bin/python3 scripts/compare_caustic.py --eikon %s [--povray "
+        "DIR]\n",
+        o.out.c_str());
     return 0;
 }
 
@@ -132,7 +135,8 @@ void addBenchCausticCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--resolution", o->resolution,
                     "voxels across the 2.4-unit floor square (default 96)");
     cmd->add_option("--per-side", o->perSide, "photons per side of the light's grid (default 512)");
-    cmd->add_option("--falloff", o->falloff, "the sphere's falloff, scene units (default 0: sharp)");
+    cmd->add_option("--falloff", o->falloff,
+                    "the sphere's falloff, scene units (default 0: sharp)");
     cmd->add_option("--threads", o->threads, "cap TBB's threads (default: all cores)");
     cmd->add_flag("--quick", o->quick, "a small run, to check that it works: D 1.5, 48 voxels");
     cmd->add_option("--out", o->out, "folder for the maps (default out/bench/caustic)");

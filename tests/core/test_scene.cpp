@@ -181,6 +181,19 @@ TEST_CASE("a simulation source needs the scene's simulation", "[scene]") {
         Catch::Contains("s.json:/sources/0/file") && Catch::Contains("unknown key"));
 }
 
+TEST_CASE("render.integrator names the view rays' integrator; others are errors", "[scene]") {
+    const std::string head =
+        R"({"sources": [{"type": "sphere", "field": "n"}], "materials": [{"name": "glass", )"
+        R"("field": "n", "ior": 1.5}], "render": {"integrator": )";
+    for (const std::string& name : eikon::rayIntegratorNames()) {
+        const eikon::Scene scene = eikon::parseScene(head + "\"" + name + "\"}}", "s.json");
+        CHECK(eikon::rayIntegratorName(scene.render.integrator) == name);
+    }
+    CHECK_THROWS_WITH(
+        eikon::parseScene(head + "\"rk5\"}}", "s.json"),
+        Catch::Contains("s.json:/render/integrator") && Catch::Contains("did you mean \"rk4\""));
+}
+
 TEST_CASE("the example in docs/scene-format.md parses", "[scene]") {
     const std::string docPath = std::string(EIKON_SOURCE_DIR) + "/docs/scene-format.md";
     eikon::Scene scene;
@@ -233,6 +246,7 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
     CHECK(scene.render.width == 640);
     CHECK(scene.render.height == 480);
     CHECK(scene.render.stepVoxels == 1.0f);
+    CHECK(scene.render.integrator == eikon::RayIntegrator::Verlet);
     CHECK(scene.render.lightTransport == "{}");
     CHECK(scene.render.minTransmittance == model.render.minTransmittance);
     CHECK(scene.render.exposure == 0.0f);

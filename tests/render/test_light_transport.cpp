@@ -126,6 +126,12 @@ TEST_CASE("each method reads its own section: defaults written once, errors at t
             failureOf(glassInFog(R"("light_transport": {"photons": {"kappa_tolerance": -1}})"));
         CHECK(k.where == "glass.json:/render/light_transport/photons/kappa_tolerance");
         CHECK_THAT(k.reason, Contains(">= 0"));
+        CHECK(failureOf(glassInFog(R"("light_transport": {"photons": {"max_step_voxels": 0}})"))
+                  .where == "glass.json:/render/light_transport/photons/max_step_voxels");
+        const Failure i =
+            failureOf(glassInFog(R"("light_transport": {"photons": {"integrator": "rk2"}})"));
+        CHECK(i.where == "glass.json:/render/light_transport/photons/integrator");
+        CHECK_THAT(i.reason, Contains("\"midpoint\""));
     }
     SECTION("the section of a method that does not run is checked too") {
         const Failure f = failureOf(glassInFog(
@@ -179,12 +185,17 @@ TEST_CASE("a method's cache key follows its own settings", "[light_transport]") 
                                                      {"flux_threshold", 1e-3},
                                                      {"stop_fraction", 0.01},
                                                      {"steps_per_round", 5},
-                                                     {"kappa_tolerance", 0.3}}) {
+                                                     {"kappa_tolerance", 0.3},
+                                                     {"max_step_voxels", 4}}) {
         INFO(key);
         eikon::test::setPhotonSetting(next, key, value);
         renderer.render({0, next});
         CHECK(renderer.transportRuns("photons") == ++runs);
     }
+    // So does the integrator.
+    eikon::patchLightTransport(next, R"({"photons": {"integrator": "verlet"}})");
+    renderer.render({0, next});
+    CHECK(renderer.transportRuns("photons") == ++runs);
     // Light volume settings change nothing of the photons.
     eikon::test::setShadows(next, "volume");
     renderer.render({0, next});
