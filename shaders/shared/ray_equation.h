@@ -26,11 +26,6 @@
 #define EK_RAY_RK4 2
 #define EK_RAY_VERLET 3
 
-// The number of evaluations of the ∇n volume one step of `integrator` takes.
-int rayStepEvaluations(int integrator) {
-    return integrator == EK_RAY_RK4 ? 4 : integrator == EK_RAY_MIDPOINT ? 2 : 1;
-}
-
 // xyz: ∇n; w: n, at world point x.
 vec4 gradientAt(vec3 x) {
     return sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(x));
