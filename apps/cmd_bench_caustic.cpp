@@ -31,6 +31,7 @@ struct BenchCausticOptions {
     int resolution = 96;  // voxels across the 2.4-unit square
     int perSide = 512;
     float falloff = 0.0f;
+    std::string edgeFilter = "bspline";  // the sphere's default
     int threads = 0;
     bool quick = false;
     std::string out = "out/bench/caustic";
@@ -50,8 +51,8 @@ std::string sceneJson(double d, const BenchCausticOptions& o) {
       << R"(], "max": [)" << kHalf << ", " << (ny - 2) * h << ", " << kHalf
       << R"(]}, "resolution": [)" << o.resolution << ", " << ny << ", " << o.resolution << R"(]},
  "sources": [{"type": "sphere", "field": "n", "center": [0, )"
-      << d << R"(, 0], "radius": 1, "value": 1, "falloff": )" << o.falloff << R"(, "voxel_size": )"
-      << h << R"(}],
+      << d << R"(, 0], "radius": 1, "value": 1, "falloff": )" << o.falloff
+      << R"(, "edge_filter": ")" << o.edgeFilter << R"(", "voxel_size": )" << h << R"(}],
  "materials": [{"name": "glass", "field": "n", "ior": 1.5}],
  "lights": [{"type": "point", "position": [0, 100, 0], "intensity": 1}],
  "receivers": [{"type": "plane", "axis": "y", "position": 0, "albedo": [1, 1, 1]}],
@@ -72,6 +73,8 @@ int runBenchCaustic(BenchCausticOptions o) {
         throw Error("--resolution", "expected 16 to 256 voxels across the floor square");
     if (o.perSide < 16 || o.perSide > 4096) throw Error("--per-side", "expected 16 to 4096");
     if (!(o.falloff >= 0.0f)) throw Error("--falloff", "expected a number >= 0");
+    if (o.edgeFilter != "box" && o.edgeFilter != "bspline")
+        throw Error("--edge-filter", "expected box or bspline, got '" + o.edgeFilter + "'");
     std::vector<double> distances;
     for (const std::string& item : splitList(o.distances)) {
         char* end = nullptr;
@@ -86,9 +89,9 @@ int runBenchCaustic(BenchCausticOptions o) {
     std::printf("# eikon bench caustic: a glass ball's floor caustic, as POV-Ray's focus sweep\n");
     printBenchHeader(stdout, o.threads);
     std::printf(
-        "# sphere R 1, n 1.5, falloff %g, centre D above the floor; point light at 100; "
-        "%d voxels across the 2.4-unit floor square; %d^2 photons; CPU twin\n",
-        double(o.falloff), o.resolution, o.perSide);
+        "# sphere R 1, n 1.5, falloff %g, edge filter %s, centre D above the floor; point light "
+        "at 100; %d voxels across the 2.4-unit floor square; %d^2 photons; CPU twin\n",
+        double(o.falloff), o.edgeFilter.c_str(), o.resolution, o.perSide);
     std::printf("%-6s | %9s | %7s %7s | %s\n", "D", "ms", "width", "height", "map");
     for (const double d : distances) {
         char name[64];
@@ -137,6 +140,8 @@ void addBenchCausticCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--per-side", o->perSide, "photons per side of the light's grid (default 512)");
     cmd->add_option("--falloff", o->falloff,
                     "the sphere's falloff, scene units (default 0: sharp)");
+    cmd->add_option("--edge-filter", o->edgeFilter,
+                    "the sphere's edge filter, box or bspline (default bspline, a sphere's)");
     cmd->add_option("--threads", o->threads, "cap TBB's threads (default: all cores)");
     cmd->add_flag("--quick", o->quick, "a small run, to check that it works: D 1.5, 48 voxels");
     cmd->add_option("--out", o->out, "folder for the maps (default out/bench/caustic)");

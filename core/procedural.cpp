@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/bspline_edge.h"
 #include "core/error.h"
 #include "core/memory_limit.h"
 #include "core/scene.h"
@@ -75,6 +76,11 @@ bool proceduralVoxelBox(const SourceSpec& src, glm::ivec3& i0, glm::ivec3& i1) {
     shapeExtent(src, lo, hi);
     lo -= double(src.falloff);
     hi += double(src.falloff);
+    // The B-spline edge filter reaches 2h past the falloff (edgeWeight).
+    if (resolvedEdgeFilter(src) == EdgeFilter::BSpline) {
+        lo -= 2.0 * double(src.voxelSize);
+        hi += 2.0 * double(src.voxelSize);
+    }
     if (src.clip) {
         lo = glm::max(lo, glm::dvec3(src.clip->min));
         hi = glm::min(hi, glm::dvec3(src.clip->max));
@@ -104,18 +110,45 @@ double luneburgExcessIndex(double r, double radius) {
     return std::sqrt(2.0 - s * s) - 1.0;
 }
 
-double edgeWeight(double d, double falloff, double h, double sphereRadius) {
-    // A sphere bends away from its tangent plane by t²/(2ρ) at tangential offset t: over a
-    // voxel's two tangential directions (mean t² = h²/12 each) the plane's distance grows by
-    // h²/(12ρ) on average.
-    if (sphereRadius > 0.0) d += h * h / (12.0 * std::max(sphereRadius + d, 0.5 * h));
-    // G(s) = ∫ ramp up to s, less the part inside: ramp = 1 inside, 1 − s/F over the falloff.
+namespace {
+
+// The edge e (1 inside, 1 − s/falloff over the falloff, 0 beyond; a step when falloff is 0) at
+// signed distance d averaged along the normal with the cubic B-spline B(s/h)/h. With
+// ramp(x) = ∫ max(x − s, 0) B(s) ds, e = 1 − (clamp(d, 0, F))/F = 1 − (max(d, 0) − max(d − F, 0))/F
+// averages to 1 − (h/F)(ramp(d/h) − ramp((d − F)/h)), and to 1 − ∫_{−∞}^{d/h} B as F → 0.
+double bsplineAveragedEdge(double d, double falloff, double h) {
+    // A falloff far below the filter's width is a step to 1e-6 (and the difference of ramps,
+    // divided by it, would be rounding).
+    if (falloff < 1e-6 * h) return 1.0 - cubicBSplineCdf(d / h);
+    return 1.0 - (h / falloff) * (cubicBSplineRamp(d / h) - cubicBSplineRamp((d - falloff) / h));
+}
+
+// The same edge averaged across the voxel's width along the normal (a box of width h).
+// G(s) = ∫ e up to s, less the part inside.
+double boxAveragedEdge(double d, double falloff, double h) {
     const auto G = [falloff](double s) {
         if (s <= 0.0) return s;
         if (s >= falloff) return 0.5 * falloff;
         return s - s * s / (2.0 * falloff);
     };
-    const double w = (G(d + 0.5 * h) - G(d - 0.5 * h)) / h;
+    return (G(d + 0.5 * h) - G(d - 0.5 * h)) / h;
+}
+
+}  // namespace
+
+EdgeFilter resolvedEdgeFilter(const SourceSpec& src) {
+    if (src.edgeFilter != EdgeFilter::ShapeDefault) return src.edgeFilter;
+    return src.type == SourceType::Sphere ? EdgeFilter::BSpline : EdgeFilter::Box;
+}
+
+double edgeWeight(double d, double falloff, double h, EdgeFilter filter, double sphereRadius) {
+    const bool bspline = filter == EdgeFilter::BSpline;
+    // A sphere bends away from its tangent plane by t²/(2ρ) at tangential offset t: over the
+    // filter's two tangential directions (mean t² = h²/12 each for the box, h²/3 for the
+    // B-spline) the plane's distance grows by h²/(12ρ) or h²/(3ρ) on average.
+    if (sphereRadius > 0.0)
+        d += h * h / ((bspline ? 3.0 : 12.0) * std::max(sphereRadius + d, 0.5 * h));
+    const double w = bspline ? bsplineAveragedEdge(d, falloff, h) : boxAveragedEdge(d, falloff, h);
     // A face on a voxel boundary (a box on multiples of h) puts its neighbours' centres h/2
     // away up to the float rounding of the scene's numbers (0.9f is 24 · 0.0375f less 1.6e-6 h):
     // they are wholly in or out, not a hair in (which would add a layer of active voxels and move
@@ -131,8 +164,9 @@ double proceduralValue(const SourceSpec& src, glm::dvec3 p) {
     const double d = signedDistance(src, p);
     // The Luneburg profile falls to 0 at the surface already: no step to average.
     if (src.profile == SourceProfile::Luneburg) return d <= 0.0 ? profileAt(src, p) : 0.0;
-    const double w = edgeWeight(d, double(src.falloff), double(src.voxelSize),
-                                src.type == SourceType::Sphere ? double(src.radius) : 0.0);
+    const double w =
+        edgeWeight(d, double(src.falloff), double(src.voxelSize), resolvedEdgeFilter(src),
+                   src.type == SourceType::Sphere ? double(src.radius) : 0.0);
     return w > 0.0 ? profileAt(src, p) * w : 0.0;
 }
 

@@ -233,6 +233,10 @@ void readProceduralCommon(Object& object, SourceSpec& source) {
     if (auto falloff = object.optional("falloff")) {
         source.falloff = falloff->floatNumber(Range::atLeast(0.0));
     }
+    if (auto filter = object.optional("edge_filter")) {
+        source.edgeFilter =
+            filter->choice({"box", "bspline"}) == "box" ? EdgeFilter::Box : EdgeFilter::BSpline;
+    }
     if (auto voxelSize = object.optional("voxel_size")) {
         source.voxelSize = voxelSize->floatNumber(Range::greaterThan(0.0));
         checkVoxelSize(*voxelSize, glm::vec3(source.voxelSize), Bounds3{}, "the voxels");
@@ -283,6 +287,9 @@ void readSphereSource(Object& object, SourceSpec& source) {
             object.forbid("falloff",
                           "the luneburg profile is already 0 at the surface, so a falloff would "
                           "change nothing; remove 'falloff'");
+            object.forbid("edge_filter",
+                          "the luneburg profile has no step at the surface to filter; remove "
+                          "'edge_filter'");
             object.forbid("ramp", "a sphere has one profile: remove 'ramp' or 'profile'");
         }
     }

@@ -42,6 +42,13 @@ enum class SourceType { Vdb, VdbSequence, Sphere, Box, Simulation };
 // Ramp: linear along an axis, from rampFrom at the shape's lowest extent to rampTo at its highest.
 enum class SourceProfile { Uniform, Luneburg, Ramp };
 
+// How a procedural shape's edge is averaged into its voxels (core/procedural.h, edgeWeight):
+// Box, across the voxel's width (its coverage); BSpline, with the cubic B-spline over four voxels
+// (core/bspline_edge.h). ShapeDefault: BSpline for spheres, whose surface crosses the grid at
+// every angle and whose box-averaged edge aliases into rings in a caustic; Box for boxes, whose
+// faces are the grid's planes and whose coverage is exact there.
+enum class EdgeFilter { ShapeDefault, Box, BSpline };
+
 struct SourceSpec {
     SourceType type = SourceType::Vdb;
     // Vdb: a file. VdbSequence: any frame of the sequence or a pattern with #### in it.
@@ -63,6 +70,7 @@ struct SourceSpec {
     float cornerRadius = 0.0f;  // Box: edges and corners rounded to this radius
     float value = 1.0f;
     float falloff = 0.0f;
+    EdgeFilter edgeFilter = EdgeFilter::ShapeDefault;
     float voxelSize = 0.05f;
     SourceProfile profile = SourceProfile::Uniform;
     int rampAxis = 1;  // Ramp: 0, 1, 2 for x, y, z

@@ -10,12 +10,18 @@ Measures, as the peer's povray_caustic_focus.py defines them:
   r50   the radius around the axis that holds half the excess (E - base outside the shadow disk
         r > 1, E inside it)
   dev   Eikon's RMS relative deviation from the exact trace on the same grid and filter, over the
-        texels inside the shadow's disk (r < 0.95): ripples, rings and noise
+        texels inside the shadow's disk (r < 0.95): ripples, rings and noise; dark texels weigh
+        as much as bright ones
+  L1    sum |Eikon - exact| / sum exact over the same texels: the share of the disk's light that
+        lies in the wrong place, weighted as a picture shows it
 The exact trace refracts rays from the light through the sphere (no reflection, as the peer's
 scene), spread over the floor as Eikon spreads photons (bilinear, then the 3-tap binomial filter
 of the receiver map) on Eikon's texel grid, and also binned on POV-Ray's 480 px grid.
 
 usage: compare_caustic.py --eikon DIR [--povray DIR] [--pov-base B] [--rays N] [--plot PNG]
+                          [--before DIR --maps PNG]
+--before: maps of an earlier run (e.g. `eikon bench caustic --edge-filter box`), shown beside
+--eikon's and the exact map in --maps, at the heights both runs hold (at most three).
 """
 import argparse
 import glob
@@ -164,16 +170,10 @@ def binomial(e):
     return e
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--eikon", required=True)
-    ap.add_argument("--povray")
-    ap.add_argument("--pov-base", type=float, default=0.0003)
-    ap.add_argument("--rays", type=int, default=4000000)
-    ap.add_argument("--plot")
-    a = ap.parse_args()
+def read_maps(folder):
+    """{D: irradiance map} of the caustic_D*.f32 files `eikon bench caustic` wrote to folder."""
     maps = {}
-    for path in glob.glob(os.path.join(a.eikon, "caustic_D*.f32")):
+    for path in glob.glob(os.path.join(folder, "caustic_D*.f32")):
         d = float(re.search(r"caustic_D([0-9.]+)\.f32$", path).group(1))
         e = np.fromfile(path, dtype=np.float32).astype(np.float64)
         n = int(round(math.sqrt(e.size)))
@@ -181,7 +181,48 @@ def main():
             sys.exit(f"eikon: {path}: not a square map")
         maps[d] = e.reshape(n, n)
     if not maps:
-        sys.exit(f"eikon: {a.eikon}: no caustic_D*.f32 maps")
+        sys.exit(f"eikon: {folder}: no caustic_D*.f32 maps")
+    return maps
+
+
+def plot_maps(path, rows, before, base):
+    """Before, after and exact maps (log irradiance / lit floor) at up to three heights."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    picked = [r for r in rows if r[0] in before and before[r[0]].shape == r[9].shape]
+    picked = picked[-3:]
+    if not picked:
+        sys.exit("eikon: compare_caustic.py: --before holds none of --eikon's heights")
+    fig, ax = plt.subplots(len(picked), 3, figsize=(11, 3.7 * len(picked)), squeeze=False)
+    for i, r in enumerate(picked):
+        for j, (m, title) in enumerate(((before[r[0]], "before (--before)"),
+                                        (r[9], "Eikon"), (r[10], "exact Snell trace"))):
+            im = ax[i][j].imshow(np.log10(np.maximum(m / base, 1e-2)).T, origin="lower",
+                                 extent=[-HALF, HALF, -HALF, HALF], vmin=-1, vmax=1.5,
+                                 cmap="inferno")
+            ax[i][j].set_title(f"{title}, D = {r[0]:g}", fontsize=9)
+            ax[i][j].set_xticks([])
+            ax[i][j].set_yticks([])
+        fig.colorbar(im, ax=ax[i].tolist(), shrink=0.8, label="log10 irradiance / lit floor")
+    fig.savefig(path, dpi=64, bbox_inches="tight")
+    print(f"wrote {path}")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--eikon", required=True)
+    ap.add_argument("--povray")
+    ap.add_argument("--pov-base", type=float, default=0.0003)
+    ap.add_argument("--rays", type=int, default=4000000)
+    ap.add_argument("--plot")
+    ap.add_argument("--before")
+    ap.add_argument("--maps")
+    a = ap.parse_args()
+    if bool(a.before) != bool(a.maps):
+        sys.exit("eikon: compare_caustic.py: --before and --maps go together")
+    maps = read_maps(a.eikon)
+    before = read_maps(a.before) if a.before else {}
     pov = {}
     if a.povray:
         for path in glob.glob(os.path.join(a.povray, "focus_D*.ppm")):
@@ -193,7 +234,7 @@ def main():
     print("# D: centre height / R. peak: 3x3 box mean / lit floor; r50 / R. exact: Snell trace "
           f"({a.rays} rays), on Eikon's grid (bilinear + binomial) and on POV-Ray's 480 px grid")
     print(f"{'D':>5} | {'eikon peak':>10} {'r50':>6} | {'exact peak':>10} {'r50':>6} | "
-          f"{'ratio':>6} {'dev':>6} | {'exact480 peak':>13} {'r50':>6} | {'POV peak':>8} {'r50':>6}")
+          f"{'ratio':>6} {'dev':>6} {'L1':>6} | {'exact480 peak':>13} {'r50':>6} | {'POV peak':>8} {'r50':>6}")
     for d in sorted(maps):
         e = maps[d]
         n = e.shape[0]
@@ -205,8 +246,9 @@ def main():
         p4, r4 = measure(ex480, base)
         inner = (radii(n) < 0.95) & (ex > 0)
         dev = float(np.sqrt(np.mean(((e - ex)[inner] / ex[inner]) ** 2)))
+        l1 = float(np.sum(np.abs(e - ex)[inner]) / np.sum(ex[inner]))
         line = (f"{d:5.2f} | {pe:10.1f} {re_:6.3f} | {px:10.1f} {rx:6.3f} | {pe / px:6.2f} "
-                f"{dev:6.3f} | "
+                f"{dev:6.3f} {l1:6.3f} | "
                 f"{p4:13.1f} {r4:6.3f} |")
         pp = rp = float("nan")
         if d in pov:
@@ -214,6 +256,8 @@ def main():
             line += f" {pp:8.1f} {rp:6.3f}"
         print(line)
         rows.append((d, pe, re_, px, rx, p4, r4, pp, rp, e, ex))
+    if a.maps:
+        plot_maps(a.maps, rows, before, base)
     if a.plot:
         import matplotlib
         matplotlib.use("Agg")

@@ -178,56 +178,80 @@ TEST_CASE("ramp: linear along its axis inside, clamped then fading outside", "[p
     CHECK(proceduralValue(slab, {0.0, 0.7, 0.0}) == Approx(0.4 * 0.05 / 1.6).epsilon(1e-6));
 }
 
-TEST_CASE("a sharp edge is the voxel's coverage: 1/2 on the surface, the volume kept",
-          "[procedural]") {
-    // edgeWeight with no falloff: clamp(1/2 − d/h, 0, 1).
+TEST_CASE("a sharp edge by either filter: 1/2 on the surface, the volume kept", "[procedural]") {
     const double h = 0.1;
-    CHECK(edgeWeight(-0.05, 0.0, h) == 1.0);
-    CHECK(edgeWeight(0.0, 0.0, h) == Approx(0.5).epsilon(1e-12));
-    CHECK(edgeWeight(0.02, 0.0, h) == Approx(0.3).epsilon(1e-12));
-    CHECK(edgeWeight(0.05, 0.0, h) == 0.0);
-    // A falloff of many voxels: the ramp itself, away from its ends.
-    CHECK(edgeWeight(0.5, 2.0, h) == Approx(0.75).epsilon(1e-12));
-    // The weight falls monotonically, from 1 to 0, for every falloff.
-    for (double falloff : {0.0, 0.03, 0.1, 0.35}) {
-        double last = 1.0;
-        for (double d = -0.1; d <= falloff + 0.1; d += 0.001) {
-            const double w = edgeWeight(d, falloff, h);
-            CHECK(w <= last + 1e-12);
-            last = w;
+    // Box, no falloff: the voxel's coverage, clamp(1/2 − d/h, 0, 1).
+    CHECK(edgeWeight(-0.05, 0.0, h, EdgeFilter::Box) == 1.0);
+    CHECK(edgeWeight(0.0, 0.0, h, EdgeFilter::Box) == Approx(0.5).epsilon(1e-12));
+    CHECK(edgeWeight(0.02, 0.0, h, EdgeFilter::Box) == Approx(0.3).epsilon(1e-12));
+    CHECK(edgeWeight(0.05, 0.0, h, EdgeFilter::Box) == 0.0);
+    // B-spline, no falloff: 1 − ∫ B up to d/h; ∫ B up to −1 is (1/6) ∫ (2 + x)³ = 1/24.
+    CHECK(edgeWeight(0.0, 0.0, h, EdgeFilter::BSpline) == Approx(0.5).epsilon(1e-12));
+    CHECK(edgeWeight(0.1, 0.0, h, EdgeFilter::BSpline) == Approx(1.0 / 24.0).epsilon(1e-12));
+    CHECK(edgeWeight(-0.1, 0.0, h, EdgeFilter::BSpline) == Approx(23.0 / 24.0).epsilon(1e-12));
+    CHECK(edgeWeight(0.2, 0.0, h, EdgeFilter::BSpline) == 0.0);
+    CHECK(edgeWeight(-0.2, 0.0, h, EdgeFilter::BSpline) == 1.0);
+    for (EdgeFilter filter : {EdgeFilter::Box, EdgeFilter::BSpline}) {
+        INFO((filter == EdgeFilter::Box ? "box" : "bspline"));
+        // A falloff of many voxels: the ramp itself, away from its ends.
+        CHECK(edgeWeight(0.5, 2.0, h, filter) == Approx(0.75).epsilon(1e-12));
+        // A falloff far below a voxel is the step.
+        CHECK(edgeWeight(0.01, 1e-12, h, filter) ==
+              Approx(edgeWeight(0.01, 0.0, h, filter)).epsilon(1e-9));
+        // The weight falls monotonically, from 1 to 0, for every falloff.
+        for (double falloff : {0.0, 0.03, 0.1, 0.35}) {
+            double last = 1.0;
+            for (double d = -0.25; d <= falloff + 0.25; d += 0.001) {
+                const double w = edgeWeight(d, falloff, h, filter);
+                CHECK(w <= last + 1e-12);
+                last = w;
+            }
+            CHECK(last == 0.0);
+            // A flat edge at any offset p: the samples at the voxel centres sum to the volume
+            // inside it (both filters' integer shifts sum to 1), 10 voxels below plus p/h.
+            for (double p : {0.0, 0.013, 0.05, 0.077}) {
+                double sum = 0.0;
+                for (int k = -10; k < 20; ++k)
+                    sum += edgeWeight((k + 0.5) * h - p, falloff, h, filter);
+                CHECK(sum == Approx(10.0 + (p + 0.5 * falloff) / h).epsilon(1e-4));
+            }
         }
-        CHECK(last == 0.0);
     }
 
     // A sharp sphere of radius 6.3 voxels: the field's integral is the sphere's volume to 0.1 %
-    // (measured: −0.011 %; the plane's coverage without the sphere's bend, +0.62 %; the step
-    // sampled at voxel centres, −0.32 %, its error set by where centres happen to fall), and
-    // sampled trilinearly, as the renderer samples it, the field crosses 1/2 within 0.15 voxel
-    // of the surface along any ray from the centre (measured 0.09-0.11 voxel inside; a step
-    // crosses 1/2 halfway between the last centre in and the first out, up to 0.5 voxel off).
+    // (measured, box: −0.011 %, the plane's coverage without the sphere's bend +0.62 %, the step
+    // sampled at voxel centres −0.32 %, its error set by where centres happen to fall; B-spline:
+    // −0.0002 %), and sampled trilinearly, as the renderer samples it, the field crosses 1/2
+    // within 0.15 voxel of the surface along any ray from the centre (measured, box: 0.09-0.11
+    // voxel inside, B-spline: 0.07-0.12; a step crosses 1/2 halfway between the last centre in
+    // and the first out, up to 0.5 voxel off).
     ensureOpenVdbInitialized();
     const glm::vec3 centre(0.013f, -0.021f, 0.034f);
     const float radius = 0.63f;
-    const SourceSpec ball = test::sphereSource("n", centre, radius, 1.0f, 0.0f, 0.1f);
-    const auto grid = makeProceduralField(ball);
-    double sum = 0.0;
-    for (auto it = grid->cbeginValueOn(); it; ++it) sum += double(*it);
-    const double volume = sum * 0.001;
-    const double exact = 4.0 / 3.0 * 3.14159265358979 * std::pow(double(radius), 3.0);
-    INFO("integral " << volume << ", sphere " << exact);
-    CHECK(std::abs(volume / exact - 1.0) < 0.001);
-    for (const glm::dvec3 dir : {glm::dvec3(1, 0, 0), glm::normalize(glm::dvec3(1, 1, 0)),
-                                 glm::normalize(glm::dvec3(1, 2, 3)), glm::dvec3(0, 0, -1)}) {
-        const openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler> sample(
-            *grid);
-        auto at = [&](double r) {
-            const glm::dvec3 p = glm::dvec3(centre) + r * dir;
-            return double(sample.wsSample(openvdb::Vec3d(p.x, p.y, p.z)));
-        };
-        double lo = 0.4, hi = 0.9;
-        for (int i = 0; i < 60; ++i) (at(0.5 * (lo + hi)) > 0.5 ? lo : hi) = 0.5 * (lo + hi);
-        INFO("direction " << dir.x << " " << dir.y << " " << dir.z << ": 1/2 at r = " << lo);
-        CHECK(std::abs(lo - double(radius)) < 0.15 * 0.1);
+    for (EdgeFilter filter : {EdgeFilter::Box, EdgeFilter::BSpline}) {
+        SourceSpec ball = test::sphereSource("n", centre, radius, 1.0f, 0.0f, 0.1f);
+        ball.edgeFilter = filter;
+        const auto grid = makeProceduralField(ball);
+        double sum = 0.0;
+        for (auto it = grid->cbeginValueOn(); it; ++it) sum += double(*it);
+        const double volume = sum * 0.001;
+        const double exact = 4.0 / 3.0 * 3.14159265358979 * std::pow(double(radius), 3.0);
+        INFO((filter == EdgeFilter::Box ? "box" : "bspline")
+             << ": integral " << volume << ", sphere " << exact);
+        CHECK(std::abs(volume / exact - 1.0) < 0.001);
+        for (const glm::dvec3 dir : {glm::dvec3(1, 0, 0), glm::normalize(glm::dvec3(1, 1, 0)),
+                                     glm::normalize(glm::dvec3(1, 2, 3)), glm::dvec3(0, 0, -1)}) {
+            const openvdb::tools::GridSampler<openvdb::FloatGrid, openvdb::tools::BoxSampler>
+                sample(*grid);
+            auto at = [&](double r) {
+                const glm::dvec3 p = glm::dvec3(centre) + r * dir;
+                return double(sample.wsSample(openvdb::Vec3d(p.x, p.y, p.z)));
+            };
+            double lo = 0.4, hi = 0.9;
+            for (int i = 0; i < 60; ++i) (at(0.5 * (lo + hi)) > 0.5 ? lo : hi) = 0.5 * (lo + hi);
+            INFO("direction " << dir.x << " " << dir.y << " " << dir.z << ": 1/2 at r = " << lo);
+            CHECK(std::abs(lo - double(radius)) < 0.15 * 0.1);
+        }
     }
 }
 
@@ -298,13 +322,15 @@ TEST_CASE("procedural keys parse", "[procedural][scene]") {
           {"type": "box", "field": "n.slab", "min": [-2, -1, -1], "max": [2, 0, 1],
            "ramp": {"axis": "z", "from": 0.3, "to": 0}},
           {"type": "box", "field": "n.flint", "corner_radius": 0.25, "falloff": 0.05,
-           "clip": {"min": [-1, -0.1, -1], "max": [1, 0.2, 1]}}],
+           "clip": {"min": [-1, -0.1, -1], "max": [1, 0.2, 1]}},
+          {"type": "sphere", "field": "n", "edge_filter": "box"},
+          {"type": "box", "field": "n", "edge_filter": "bspline"}],
         "materials": [{"name": "lens", "field": "n", "ior": 2},
                       {"name": "slab", "field": "n.slab", "ior": 2},
                       {"name": "flint", "field": "n.flint", "ior": 1.6, "absorption": [0, 0.2, 0.4]}]
       })",
                                    "s.json");
-    REQUIRE(scene.sources.size() == 3);
+    REQUIRE(scene.sources.size() == 5);
     CHECK(scene.sources[0].profile == SourceProfile::Luneburg);
     CHECK(scene.sources[1].profile == SourceProfile::Ramp);
     CHECK(scene.sources[1].rampAxis == 2);
@@ -317,6 +343,11 @@ TEST_CASE("procedural keys parse", "[procedural][scene]") {
     CHECK(scene.sources[2].clip->min == glm::vec3(-1.0f, -0.1f, -1.0f));
     CHECK_FALSE(scene.sources[0].clip.has_value());
     CHECK(scene.materials[2].field == "n.flint");
+    // The edge filter: each shape's default unless the source names one.
+    CHECK(resolvedEdgeFilter(scene.sources[0]) == EdgeFilter::BSpline);
+    CHECK(resolvedEdgeFilter(scene.sources[1]) == EdgeFilter::Box);
+    CHECK(resolvedEdgeFilter(scene.sources[3]) == EdgeFilter::Box);
+    CHECK(resolvedEdgeFilter(scene.sources[4]) == EdgeFilter::BSpline);
 }
 
 TEST_CASE("procedural mistakes name their JSON path", "[procedural][scene]") {
@@ -338,6 +369,16 @@ TEST_CASE("procedural mistakes name their JSON path", "[procedural][scene]") {
             R"({"type": "box", "field": "n", "value": 1, "ramp": {"axis": "y", "from": 0, "to": 1}})"));
         CHECK(f.where == "lens.json:/sources/0/value");
         CHECK_THAT(f.reason, Contains("a ramp sets the values"));
+    }
+    SECTION("an edge filter that does not exist, and one on a luneburg lens") {
+        Failure f = failureOf(
+            sceneWithSource(R"({"type": "sphere", "field": "n", "edge_filter": "gauss"})"));
+        CHECK(f.where == "lens.json:/sources/0/edge_filter");
+        CHECK_THAT(f.reason, Contains(R"(expected one of "box", "bspline", got "gauss")"));
+        f = failureOf(sceneWithSource(
+            R"({"type": "sphere", "field": "n", "profile": "luneburg", "edge_filter": "box"})"));
+        CHECK(f.where == "lens.json:/sources/0/edge_filter");
+        CHECK_THAT(f.reason, Contains("no step at the surface"));
     }
     SECTION("a falloff on a luneburg lens") {
         const Failure f = failureOf(sceneWithSource(
