@@ -180,9 +180,9 @@ void addBenchMethodsCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--reps", o->reps, "runs per measurement, the median is reported (default 3)");
     cmd->add_option("--methods", o->methods,
                     "comma-separated registered methods (default: all of them)");
-    cmd->add_option(
-        "--cases", o->cases,
-        "comma-separated: slab, ball_lens, luneburg, linear_n2, grin, energy (default all)");
+    cmd->add_option("--cases", o->cases,
+                    "comma-separated: slab, ball_lens, luneburg, linear_n2, grin, caustic, "
+                    "caustic_box, energy (default all)");
     cmd->add_option("--threads", o->threads, "cap TBB's threads (default: all cores)");
     cmd->add_flag("--quick", o->quick, "a small run, to check that it works: 49^3, one run");
     cmd->add_option("--tsv", o->tsv, "TSV output (default out/bench/methods.tsv)");
