@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/procedural.h"
+#include "core/sphere_refraction.h"
 
 namespace eikon::app {
 namespace {
@@ -296,16 +297,6 @@ MethodCase grinCase(int n) {
         "grin", n, "exit point on x0 cos(wt) + (p0/w) sin(wt), n^2 = n0^2 (1 - a^2 x^2)", beam);
 }
 
-// Refracts unit d at unit normal nrm (facing against d), eta = n1 / n2; false: total internal
-// reflection.
-bool refract(const glm::dvec3& d, const glm::dvec3& nrm, double eta, glm::dvec3& out) {
-    const double cosI = -glm::dot(d, nrm);
-    const double k = 1.0 - eta * eta * (1.0 - cosI * cosI);
-    if (k < 0.0) return false;
-    out = glm::normalize(eta * d + (eta * cosI - std::sqrt(k)) * nrm);
-    return true;
-}
-
 // The fluence rate that parallel light straight down (fluence 1 where unshadowed), refracted in
 // and out of a sharp sphere by Snell's law, leaves in the horizontal voxel layer at height y:
 // `rays`² rays over the sphere's disk, each spread bilinearly over the layer's voxel columns with
@@ -325,14 +316,8 @@ std::vector<double> exactSphereCaustic(const RenderVolume& v, glm::dvec3 centre,
         for (int b = 0; b < rays; ++b) {
             const double x = -radius + (a + 0.5) * step;
             const double z = -radius + (b + 0.5) * step;
-            const double r2 = (x * x + z * z) / (radius * radius);
-            if (r2 >= 1.0) continue;
-            const glm::dvec3 p1 = centre + glm::dvec3(x, radius * std::sqrt(1.0 - r2), z);
-            const glm::dvec3 n1 = (p1 - centre) / radius;
-            glm::dvec3 t1, t2;
-            if (!refract(glm::dvec3(0.0, -1.0, 0.0), n1, 1.0 / ior, t1)) continue;
-            const glm::dvec3 p2 = p1 - 2.0 * radius * glm::dot(n1, t1) * t1;
-            if (!refract(t1, -(p2 - centre) / radius, ior, t2)) continue;
+            glm::dvec3 p2, t2;
+            if (!refractDownThroughSphere(centre, radius, ior, x, z, p2, t2)) continue;
             if (!(t2.y < -1e-6)) continue;
             const glm::dvec3 hit = p2 + ((y - p2.y) / t2.y) * t2;
             const double fx = (hit.x - x0) / h - 0.5, fz = (hit.z - z0) / h - 0.5;

@@ -23,6 +23,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/procedural.h"
+#include "core/sphere_refraction.h"
 #include "render/transport/photons/photon_tracing.h"
 #include "support/photon_scene.h"
 #include "support/scene_builders.h"
@@ -34,16 +35,6 @@ namespace {
 constexpr float kRadius = 0.8f;
 const glm::dvec3 kCentre(0.0, 0.2, 0.0);
 
-// Refracts unit d at unit normal nrm (facing against d), eta = n1 / n2; false: total internal
-// reflection.
-bool refract(const glm::dvec3& d, const glm::dvec3& nrm, double eta, glm::dvec3& out) {
-    const double cosI = -glm::dot(d, nrm);
-    const double k = 1.0 - eta * eta * (1.0 - cosI * cosI);
-    if (k < 0.0) return false;
-    out = glm::normalize(eta * d + (eta * cosI - std::sqrt(k)) * nrm);
-    return true;
-}
-
 // The exact fraction of the parallel light entering the sphere that reaches the floor square
 // y = −1, |x|, |z| ≤ 1: rays on a fine grid over the sphere's disk, refracted in and out.
 double exactFloorFraction(double ior) {
@@ -53,15 +44,10 @@ double exactFloorFraction(double ior) {
         for (int b = 0; b < n; ++b) {
             const double x = kRadius * (2.0 * (a + 0.5) / n - 1.0);
             const double z = kRadius * (2.0 * (b + 0.5) / n - 1.0);
-            const double r2 = (x * x + z * z) / (double(kRadius) * kRadius);
-            if (r2 >= 1.0) continue;
+            if (x * x + z * z >= double(kRadius) * kRadius) continue;
             ++entered;
-            const glm::dvec3 p1 = kCentre + glm::dvec3(x, kRadius * std::sqrt(1.0 - r2), z);
-            const glm::dvec3 n1 = (p1 - kCentre) / double(kRadius);
-            glm::dvec3 t1, t2;
-            if (!refract(glm::dvec3(0.0, -1.0, 0.0), n1, 1.0 / ior, t1)) continue;
-            const glm::dvec3 p2 = p1 - 2.0 * kRadius * glm::dot(n1, t1) * t1;
-            if (!refract(t1, -(p2 - kCentre) / double(kRadius), ior, t2)) continue;
+            glm::dvec3 p2, t2;
+            if (!refractDownThroughSphere(kCentre, kRadius, ior, x, z, p2, t2)) continue;
             if (!(t2.y < 0.0)) continue;
             const glm::dvec3 floor = p2 + ((-1.0 - p2.y) / t2.y) * t2;
             if (std::abs(floor.x) <= 1.0 && std::abs(floor.z) <= 1.0) ++landed;
