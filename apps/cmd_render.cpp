@@ -38,9 +38,11 @@ struct RenderOptions {
     float shadowStep = 0.0f;
 };
 
-// The command line's choices on top of the scene as written.
-void applyOptions(const RenderOptions& o, Scene& scene) {
-    if (!o.frames.empty()) parseFrames(o.frames, scene.time);
+// The command line's choices on top of the scene as written; the frames --frames lists (empty:
+// the scene's frame_start to frame_end).
+std::vector<int> applyOptions(const RenderOptions& o, Scene& scene) {
+    std::vector<int> listed;
+    if (!o.frames.empty()) listed = parseFrames(o.frames, scene.time);
     if (o.exr) scene.output.exr = true;
     if (o.step > 0.0f) scene.render.stepVoxels = o.step;
     // Settings of the light_volumes method (render.light_transport.light_volumes): they change
@@ -53,6 +55,7 @@ void applyOptions(const RenderOptions& o, Scene& scene) {
     }
     if (!o.shadows.empty())
         patchLightTransport(scene, "{\"light_volumes\": {\"shadows\": \"" + o.shadows + "\"}}");
+    return listed;
 }
 
 void printStats(const std::vector<StageTime>& stages, double writeMs, bool softwareGl) {
@@ -97,13 +100,17 @@ int runRender(const RenderOptions& o) {
     // Before --frames: a live simulation starts at the frame_start the scene gives, whichever
     // frames are rendered. It reads the mesh files too: a bad one fails before anything else.
     SceneDriver driver(scene);
-    applyOptions(o, scene);
+    const std::vector<int> listed = applyOptions(o, scene);
     std::error_code ec;
     fs::create_directories(scene.output.directory, ec);
     if (ec) throw Error(scene.output.directory, "cannot create the output folder: " + ec.message());
-    for (const char* ext : {"png", "exr"})
-        removeStalePartials(scene.output.directory, scene.output.name, scene.time.frameStart,
-                            scene.time.frameEnd, ext);
+    for (const char* ext : {"png", "exr"}) {
+        if (listed.empty())
+            removeStalePartials(scene.output.directory, scene.output.name, scene.time.frameStart,
+                                scene.time.frameEnd, ext);
+        for (int frame : listed)
+            removeStalePartials(scene.output.directory, scene.output.name, frame, frame, ext);
+    }
 
     BackendChoice choice = chooseBackend(o.backend);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());
@@ -111,7 +118,7 @@ int runRender(const RenderOptions& o) {
     const bool softwareGl =
         renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());
     int64_t transportSteps = 0;  // before this frame
-    for (int frame = scene.time.frameStart; frame <= scene.time.frameEnd; ++frame) {
+    const auto renderFrame = [&](int frame) {
         const Image image = renderer.render(driver.frameInputs(frame, scene));
         const auto t0 = std::chrono::steady_clock::now();
         if (scene.output.png) {
@@ -139,6 +146,13 @@ int runRender(const RenderOptions& o) {
         }
         transportSteps = renderer.transportSteps();
         std::fflush(stdout);
+    };
+    // A live simulation steps through the frames between those listed (SceneDriver).
+    if (listed.empty()) {
+        for (int frame = scene.time.frameStart; frame <= scene.time.frameEnd; ++frame)
+            renderFrame(frame);
+    } else {
+        for (int frame : listed) renderFrame(frame);
     }
     return 0;
 }
@@ -151,7 +165,8 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     auto o = std::make_shared<RenderOptions>();
     cmd->add_option("input", o->input, "scene.json or cache.vdb")->required();
     cmd->add_option("-o,--output", o->outputDir, "output folder (default: the scene's)");
-    cmd->add_option("--frames", o->frames, "frame range FIRST-LAST, or one frame");
+    cmd->add_option("--frames", o->frames,
+                    "frames: 7, 1-10, 1-10x2 (every 2nd) or a comma list (1,3,5-7)");
     cmd->add_option("--size", o->size, "image size WIDTHxHEIGHT");
     cmd->add_flag("--stats", o->stats, "print time per stage (CPU and GPU)");
     cmd->add_option("--backend", o->backend,

@@ -157,7 +157,7 @@ int runSimulate(const SimulateOptions& o) {
     // frame holds the same smoke however the run was cut.
     const int first = scene.time.frameStart;
     TimeSettings written = scene.time;
-    if (!o.frames.empty()) parseFrames(o.frames, written);
+    if (!o.frames.empty()) parseFrameRange(o.frames, written);
     if (written.frameStart < first) {
         throw Error("--frames", "the simulation starts at the scene's frame_start (" +
                                     std::to_string(first) + "); got first frame " +

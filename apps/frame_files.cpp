@@ -5,24 +5,26 @@
 
 #include "core/atomic_write.h"
 #include "core/error.h"
+#include "core/frame_list.h"
 #include "core/log.h"
 
 namespace eikon::app {
 
-void parseFrames(const std::string& text, TimeSettings& time) {
-    int a = 0, b = 0;
-    char dash = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d", &a, &dash, &b) == 3 && dash == '-' && a >= 0 &&
-        b >= a) {
-        time.frameStart = a;
-        time.frameEnd = b;
-    } else if (std::sscanf(text.c_str(), "%d", &a) == 1 && a >= 0 &&
-               text.find('-') == std::string::npos) {
-        time.frameStart = time.frameEnd = a;
-    } else {
+std::vector<int> parseFrames(const std::string& text, TimeSettings& time) {
+    std::vector<int> frames = parseFrameList(text);
+    time.frameStart = frames.front();
+    time.frameEnd = frames.back();
+    return frames;
+}
+
+void parseFrameRange(const std::string& text, TimeSettings& time) {
+    TimeSettings parsed = time;
+    if (!isContiguous(parseFrames(text, parsed)))
         throw Error("--frames",
-                    "expected FIRST-LAST or one frame (e.g. 0-119), got '" + text + "'");
-    }
+                    "expected one run of frames, FIRST-LAST or one frame (a cache "
+                    "has no gaps), got '" +
+                        text + "'");
+    time = parsed;
 }
 
 std::string framePath(const std::string& directory, const std::string& name, int frame,

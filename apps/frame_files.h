@@ -2,13 +2,20 @@
 // Frame ranges and per-frame file names, shared by the commands that write one file per frame
 // (`eikon render`, `eikon simulate`).
 #include <string>
+#include <vector>
 
 #include "core/scene.h"
 
 namespace eikon::app {
 
-// "--frames" text: FIRST-LAST or one frame, into time.frameStart/frameEnd. Throws eikon::Error.
-void parseFrames(const std::string& text, TimeSettings& time);
+// "--frames" text (core/frame_list.h) that must name one run of frames, FIRST-LAST or one frame
+// (`eikon simulate` writes a cache without gaps), into time.frameStart/frameEnd. Throws
+// eikon::Error.
+void parseFrameRange(const std::string& text, TimeSettings& time);
+
+// "--frames" text (core/frame_list.h): its frames, ascending, each once; time.frameStart and
+// frameEnd become the first and the last. Throws eikon::Error.
+std::vector<int> parseFrames(const std::string& text, TimeSettings& time);
 
 // <directory>/<name>_<frame, 4 digits>.<ext>
 std::string framePath(const std::string& directory, const std::string& name, int frame,

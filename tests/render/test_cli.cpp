@@ -212,6 +212,25 @@ TEST_CASE("eikon render plays a scene's keyframes on the scene's clock", "[cli][
         runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/b") + " --frames 1-1", dir);
     REQUIRE(again.exitCode == 0);
     CHECK(readFile(dir + "/b/moving_0001.png") == second);
+    // --frames lists (core/frame_list.h): a comma list renders those frames, a step skips.
+    const RunResult listed =
+        runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/c") + " --frames 1,0", dir);
+    REQUIRE(listed.exitCode == 0);
+    CHECK(readFile(dir + "/c/moving_0000.png") == first);
+    CHECK(readFile(dir + "/c/moving_0001.png") == second);
+    const RunResult stepped =
+        runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/d") + " --frames 0-1x2", dir);
+    REQUIRE(stepped.exitCode == 0);
+    CHECK(readFile(dir + "/d/moving_0000.png") == first);
+    CHECK_FALSE(fs::exists(dir + "/d/moving_0001.png"));
+    // A malformed list is one line showing the grammar, and nothing is written.
+    const RunResult bad =
+        runEikon("render " + quoted(scene) + " -o " + quoted(dir + "/e") + " --frames 1:3", dir);
+    CHECK(bad.exitCode != 0);
+    CHECK(bad.err ==
+          "eikon: --frames: expected frames as 7, 1-10, 1-10x2 (every 2nd) or a comma list of "
+          "those (1,3,5-7), got '1:3'\n");
+    CHECK_FALSE(fs::exists(dir + "/e/moving_0001.png"));
 }
 
 TEST_CASE("eikon render steps a scene's water surface frame by frame", "[cli][water]") {

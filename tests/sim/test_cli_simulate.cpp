@@ -124,6 +124,13 @@ TEST_CASE("eikon simulate writes one VDB per frame, and a rerun replaces them cl
     REQUIRE(cut.exitCode == 0);
     CHECK(fileCount(only) == 1);
     CHECK(fileBytes(only + "/tiny_0002.vdb") == bytes2);
+    // A cache has no gaps: a list with one is refused before anything is written.
+    const std::string gap = dir + "/gap";
+    const RunResult gapped =
+        runEikon("simulate " + quoted(scene) + " -o " + quoted(gap) + " --frames 1,3", dir);
+    CHECK(gapped.exitCode != 0);
+    CHECK_THAT(gapped.err, Catch::Contains("eikon: --frames: expected one run of frames"));
+    CHECK((!fs::exists(gap) || fileCount(gap) == 0));
 }
 
 TEST_CASE("a simulation that blows up writes no runaway frame and exits non-zero",
