@@ -11,7 +11,7 @@
 using namespace eikon;
 using Frames = std::vector<int>;
 
-TEST_CASE("--frames: one frame, a range, a stepped range and comma lists", "[frames]") {
+TEST_CASE("frame lists: one frame, a range, a stepped range and comma lists", "[frames]") {
     CHECK(parseFrameList("7") == Frames{7});
     CHECK(parseFrameList("0") == Frames{0});
     CHECK(parseFrameList("1-4") == Frames{1, 2, 3, 4});
@@ -29,7 +29,7 @@ TEST_CASE("--frames: one frame, a range, a stepped range and comma lists", "[fra
     CHECK_FALSE(isContiguous(parseFrameList("4-8x2")));
 }
 
-TEST_CASE("--frames: anything else is one error showing the grammar", "[frames]") {
+TEST_CASE("frame lists: anything else is one error showing the grammar", "[frames]") {
     for (const std::string bad : {"",     "1:3", "1-3x",       "1-3x0",       "1-3y2", "1,",  ",1",
                                   "1,,2", " 1",  "1 ",         "-3",          "+3",    "3-1", "1-",
                                   "x2",   "1.5", "2147483648", "99999999999", "1-2-3", "0x10"}) {
