@@ -228,7 +228,9 @@ int runBenchSoak(const SoakOptions& o) {
     if (o.warmup < 1) throw Error("--warmup", "expected at least 1");
     if (!(o.boundMib >= 0.0)) throw Error("--bound-mib", "expected a size in MiB, 0 or more");
     const auto threadCap = limitThreads(o.threads);
-    Scene scene = sceneFromInput(o.input, "", o.size);
+    InputChoices choices;
+    choices.size = o.size;
+    Scene scene = readSceneInput(o.input, choices).scene;
     SceneDriver driver(scene);
     BackendChoice choice = chooseBackend(o.backend);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());

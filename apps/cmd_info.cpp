@@ -3,6 +3,8 @@
 
 #include "apps/commands.h"
 #include "apps/memory_limit_option.h"
+#include "core/error.h"
+#include "core/file_kind.h"
 #include "core/vdb_info.h"
 #include "sim/mesh_check.h"
 #include "sim/mesh_info.h"
@@ -16,13 +18,29 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
     addMemoryLimitOption(cmd);
     auto path = std::make_shared<std::string>();  // CLI11 binds by reference
     cmd->add_option("file", *path, "VDB file, or mesh (.obj, .off, .ply, .stl)")->required();
+    cmd->footer(
+        "Examples (from the repository root):\n  eikon info "
+        "../shared/data/vdb/houdini_smoke1.vdb\n  eikon info "
+        "../shared/data/meshes/stanford-bunny.obj\n");
     cmd->callback([path, &exitCode] {
         // Chosen by extension: a mesh problem is reported, not an error; an unreadable file is.
         if (isMeshFile(*path)) {
             const LoadedMesh loaded = loadMesh(*path);
             std::fputs(formatMeshInfo(*path, loaded, checkMesh(loaded)).c_str(), stdout);
         } else {
-            std::fputs(formatVdbInfo(inspectVdb(*path)).c_str(), stdout);
+            // Told by content: a scene, a NanoVDB or an empty file gets its own line, not a
+            // stream error from the VDB reader.
+            switch (sniffFileKind(*path)) {
+                case FileKind::Vdb:
+                    std::fputs(formatVdbInfo(inspectVdb(*path)).c_str(), stdout);
+                    break;
+                case FileKind::Json:
+                    throw Error(*path,
+                                "a scene file (JSON), not a VDB file or a mesh; render it "
+                                "with eikon render");
+                case FileKind::NanoVdb:
+                    throw Error(*path, "a NanoVDB file, which eikon does not read yet");
+            }
         }
         exitCode = 0;
     });

@@ -11,10 +11,14 @@
 #include "apps/commands.h"
 #include "apps/frame_files.h"
 #include "apps/memory_limit_option.h"
+#include "apps/output_files.h"
 #include "apps/scene_driver.h"
 #include "apps/scene_input.h"
 #include "core/error.h"
+#include "core/frame_list.h"
+#include "core/log.h"
 #include "core/scene.h"
+#include "core/scene_sources.h"
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 #include "render/gpu_timer.h"
@@ -27,8 +31,9 @@ namespace {
 
 struct RenderOptions {
     std::string input;
-    std::string outputDir;
+    std::string output;  // -o: a file, a pattern or a folder (apps/output_files.h)
     std::string frames;
+    bool hold = false;
     std::string size;
     bool stats = false;
     std::string backend = "auto";
@@ -38,11 +43,24 @@ struct RenderOptions {
     float shadowStep = 0.0f;
 };
 
-// The command line's choices on top of the scene as written; the frames --frames lists (empty:
-// the scene's frame_start to frame_end).
+// The frames a render without --frames writes: the scene's frame_start to frame_end.
+std::vector<int> sceneFrames(const TimeSettings& time) {
+    if (int64_t(time.frameEnd) - time.frameStart >= kMaxListedFrames)
+        throw Error("time", "the scene spans " +
+                                std::to_string(int64_t(time.frameEnd) - time.frameStart + 1) +
+                                " frames; eikon render writes at most " +
+                                std::to_string(kMaxListedFrames) +
+                                " at once: pick them with --frames");
+    std::vector<int> frames;
+    for (int64_t f = time.frameStart; f <= time.frameEnd; ++f) frames.push_back(int(f));
+    return frames;
+}
+
+// The command line's choices on top of the scene as written; the frames to render (--frames, or
+// the scene's).
 std::vector<int> applyOptions(const RenderOptions& o, Scene& scene) {
-    std::vector<int> listed;
-    if (!o.frames.empty()) listed = parseFrames(o.frames, scene.time);
+    const std::vector<int> listed =
+        o.frames.empty() ? sceneFrames(scene.time) : parseFrames(o.frames, scene.time);
     if (o.exr) scene.output.exr = true;
     if (o.step > 0.0f) scene.render.stepVoxels = o.step;
     // Settings of the light_volumes method (render.light_transport.light_volumes): they change
@@ -96,21 +114,24 @@ void printTransportStats(const FrameRenderer& renderer, const std::vector<StageT
 }
 
 int runRender(const RenderOptions& o) {
-    Scene scene = sceneFromInput(o.input, o.outputDir, o.size);
+    InputChoices choices;
+    choices.size = o.size;
+    choices.framesGiven = !o.frames.empty();
+    choices.hold = o.hold;
+    SceneInput input = readSceneInput(o.input, choices);
+    Scene& scene = input.scene;
     // Before --frames: a live simulation starts at the frame_start the scene gives, whichever
     // frames are rendered. It reads the mesh files too: a bad one fails before anything else.
     SceneDriver driver(scene);
-    const std::vector<int> listed = applyOptions(o, scene);
+    const std::vector<int> frames = applyOptions(o, scene);
+    // Every check before the first file: a bad range or -o writes nothing.
+    checkSequenceFrames(scene, frames);
+    const OutputFiles files = resolveOutputFiles(o.output, scene.output, frames, input.oneFrame);
+    if (!input.note.empty()) logInfo(input.note);
     std::error_code ec;
-    fs::create_directories(scene.output.directory, ec);
-    if (ec) throw Error(scene.output.directory, "cannot create the output folder: " + ec.message());
-    for (const char* ext : {"png", "exr"}) {
-        if (listed.empty())
-            removeStalePartials(scene.output.directory, scene.output.name, scene.time.frameStart,
-                                scene.time.frameEnd, ext);
-        for (int frame : listed)
-            removeStalePartials(scene.output.directory, scene.output.name, frame, frame, ext);
-    }
+    fs::create_directories(files.directory, ec);
+    if (ec) throw Error(files.directory, "cannot create the output folder: " + ec.message());
+    removeStalePartials(files.paths(frames));
 
     BackendChoice choice = chooseBackend(o.backend);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());
@@ -121,15 +142,13 @@ int runRender(const RenderOptions& o) {
     const auto renderFrame = [&](int frame) {
         const Image image = renderer.render(driver.frameInputs(frame, scene));
         const auto t0 = std::chrono::steady_clock::now();
-        if (scene.output.png) {
-            const std::string path =
-                framePath(scene.output.directory, scene.output.name, frame, "png");
+        if (files.png) {
+            const std::string path = files.path(frame, "png");
             writePng(path, image, scene.render.exposure, scene.render.toneCurve);
             std::printf("wrote %s\n", path.c_str());
         }
-        if (scene.output.exr) {
-            const std::string path =
-                framePath(scene.output.directory, scene.output.name, frame, "exr");
+        if (files.exr) {
+            const std::string path = files.path(frame, "exr");
             writeExr(path, image);
             std::printf("wrote %s\n", path.c_str());
         }
@@ -148,12 +167,7 @@ int runRender(const RenderOptions& o) {
         std::fflush(stdout);
     };
     // A live simulation steps through the frames between those listed (SceneDriver).
-    if (listed.empty()) {
-        for (int frame = scene.time.frameStart; frame <= scene.time.frameEnd; ++frame)
-            renderFrame(frame);
-    } else {
-        for (int frame : listed) renderFrame(frame);
-    }
+    for (int frame : frames) renderFrame(frame);
     return 0;
 }
 
@@ -163,10 +177,18 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand("render", "Render a scene file or a VDB cache to images");
     addMemoryLimitOption(cmd);
     auto o = std::make_shared<RenderOptions>();
-    cmd->add_option("input", o->input, "scene.json or cache.vdb")->required();
-    cmd->add_option("-o,--output", o->outputDir, "output folder (default: the scene's)");
+    cmd->add_option("input", o->input,
+                    "scene.json, cache.vdb, or a VDB sequence (fluid_data_####.vdb, %04d, $F4)")
+        ->required();
+    cmd->add_option("-o,--output", o->output,
+                    "still.png or still.exr (one frame), shot_####.png (one file per frame), or a "
+                    "folder (ending in / or existing; default: the scene's)");
     cmd->add_option("--frames", o->frames,
-                    "frames: 7, 1-10, 1-10x2 (every 2nd) or a comma list (1,3,5-7)");
+                    "frames: 7, 1-10, 1-10x2 (every 2nd) or a comma list (1,3,5-7); on a "
+                    "numbered VDB file (fluid_data_0001.vdb), frames of its sequence");
+    cmd->add_flag("--hold", o->hold,
+                  "where a VDB sequence lacks a frame (a gap, or before its first or after its "
+                  "last), show its nearest frame instead of stopping with an error");
     cmd->add_option("--size", o->size, "image size WIDTHxHEIGHT");
     cmd->add_flag("--stats", o->stats, "print time per stage (CPU and GPU)");
     cmd->add_option("--backend", o->backend,
@@ -180,6 +202,13 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::PositiveNumber);
     cmd->add_option("--shadow-step", o->shadowStep, "shadow step in voxels (overrides the scene)")
         ->check(CLI::PositiveNumber);
+    cmd->footer(
+        "Examples (from the repository root):\n  eikon render data/scenes/glass_sphere_fog.json -o "
+        "out/ --size 320x240\n  eikon render ../shared/data/vdb/houdini_smoke1.vdb -o "
+        "out/smoke.png\n  "
+        "eikon render '../shared/data/vdb/blender_smoke_c42/fluid_data_####.vdb' -o "
+        "'out/shots/shot_####.png' --hold\n  eikon render "
+        "../shared/data/vdb/blender_smoke_c42/fluid_data_0001.vdb --frames 1-2 -o out/\n");
     cmd->callback([o, &exitCode] { exitCode = runRender(*o); });
 }
 

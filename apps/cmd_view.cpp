@@ -27,6 +27,7 @@ struct ViewOptions {
     int exitAfter = 0;  // render this many frames (orbiting 10 degrees each), then quit
     std::string screenshot;
     std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
+    bool hold = false;
 };
 
 ScriptedDrag parseDrag(const std::string& text) {
@@ -46,7 +47,10 @@ int runView(const ViewOptions& o) {
     options.exitAfter = o.exitAfter;
     options.screenshot = o.screenshot;
     if (!o.drag.empty()) options.drag = parseDrag(o.drag);
-    Scene scene = sceneFromInput(o.input, "", o.size);
+    InputChoices choices;
+    choices.size = o.size;
+    choices.hold = o.hold;
+    Scene scene = readSceneInput(o.input, choices).scene;
     // Before the window opens, so that a bad scene or --drag fails without a display.
     SceneDriver driver(scene);
     ViewHandles handles(driver, scene);
@@ -77,8 +81,12 @@ void addViewCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand("view", "Show a scene or VDB cache in a window, live");
     addMemoryLimitOption(cmd);
     auto o = std::make_shared<ViewOptions>();
-    cmd->add_option("input", o->input, "scene.json or cache.vdb")->required();
+    cmd->add_option("input", o->input,
+                    "scene.json, cache.vdb, or a VDB sequence (fluid_data_####.vdb, %04d, $F4)")
+        ->required();
     cmd->add_option("--size", o->size, "window size WIDTHxHEIGHT");
+    cmd->add_flag("--hold", o->hold,
+                  "where a VDB sequence lacks a frame, show its nearest frame instead of stopping");
     cmd->add_option("--backend", o->backend,
                     "auto (GPU unless OpenGL is software), gpu, or cpu (the window still needs "
                     "OpenGL)")
@@ -90,6 +98,10 @@ void addViewCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--drag", o->drag,
                     "MESH/HANDLE:DX,DY: after the first frame, drag that ARAP handle by DX,DY "
                     "pixels (y down) as a right drag would, and print where it went (for tests)");
+    cmd->footer(
+        "Examples (from the repository root; a display, or xvfb-run -a):\n  eikon view "
+        "data/scenes/glass_sphere_fog.json\n  eikon view ../shared/data/vdb/houdini_smoke1.vdb "
+        "--size 800x600\n");
     cmd->callback([o, &exitCode] { exitCode = runView(*o); });
 }
 

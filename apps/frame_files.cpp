@@ -36,9 +36,15 @@ std::string framePath(const std::string& directory, const std::string& name, int
 
 int removeStalePartials(const std::string& directory, const std::string& name, int first, int last,
                         const char* ext) {
+    std::vector<std::string> paths;
+    for (int frame = first; frame <= last; ++frame)
+        paths.push_back(framePath(directory, name, frame, ext));
+    return removeStalePartials(paths);
+}
+
+int removeStalePartials(const std::vector<std::string>& paths) {
     int removed = 0;
-    for (int frame = first; frame <= last; ++frame) {
-        const std::string path = framePath(directory, name, frame, ext);
+    for (const std::string& path : paths) {
         if (!removeStalePartial(path)) continue;
         logInfo("removed " + path + ".partial, left by an interrupted run");
         ++removed;

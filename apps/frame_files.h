@@ -25,5 +25,7 @@ std::string framePath(const std::string& directory, const std::string& name, int
 // names them so; nothing else does), with a note for each; returns how many there were.
 int removeStalePartials(const std::string& directory, const std::string& name, int first, int last,
                         const char* ext);
+// The same for the files `paths`.
+int removeStalePartials(const std::vector<std::string>& paths);
 
 }  // namespace eikon::app

@@ -4,15 +4,13 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/file_kind.h"
+#include "core/frame_pattern.h"
+#include "core/vdb_sequence.h"
 #include "render/light_transport_registry.h"
 
 namespace eikon::app {
 namespace {
-
-bool endsWith(const std::string& s, const std::string& suffix) {
-    return s.size() >= suffix.size() &&
-           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 void parseSize(const std::string& text, RenderSettings& render) {
     int w = 0, h = 0;
@@ -24,23 +22,61 @@ void parseSize(const std::string& text, RenderSettings& render) {
     render.height = h;
 }
 
+bool isPattern(const std::string& input) {
+    return hasHashRun(toHashPattern(std::filesystem::path(input).filename().string(), input));
+}
+
+// One VDB file given with --frames: the sequence it is a frame of, said in one line (`note`); a
+// file that is not numbered has no other frames to render.
+Scene sequenceOfFile(const std::string& input, bool hold, std::string& note) {
+    VdbSequence seq;
+    try {
+        seq = findVdbSequence(input);
+    } catch (const Error&) {
+        throw Error(input,
+                    "one file, not a frame of a sequence (name_0001.vdb), so --frames has no "
+                    "other frames to render; render it without --frames");
+    }
+    note = input + " is a frame of " + seq.pattern() + " (frames " + seq.framesText() +
+           "): --frames renders frames of that sequence";
+    return defaultSceneForVdbSequence(input, hold);
+}
+
 }  // namespace
 
-Scene sceneFromInput(const std::string& input, const std::string& outputDir,
-                     const std::string& size) {
-    Scene scene;
-    if (endsWith(input, ".vdb")) {
-        scene = defaultSceneForVdb(input);
-        scene.output.name = std::filesystem::path(input).stem().string();
+SceneInput readSceneInput(const std::string& input, const InputChoices& choices) {
+    SceneInput in;
+    if (isPattern(input)) {
+        in.scene = defaultSceneForVdbSequence(input, choices.hold);
     } else {
-        scene = loadScene(input);
+        switch (sniffFileKind(input)) {
+            case FileKind::Json:
+                in.scene = loadScene(input);
+                in.oneFrame = in.scene.time.frameStart == in.scene.time.frameEnd;
+                break;
+            case FileKind::Vdb:
+                if (choices.framesGiven) {
+                    in.scene = sequenceOfFile(input, choices.hold, in.note);
+                } else {
+                    in.scene = defaultSceneForVdb(input);
+                    in.scene.output.name = std::filesystem::path(input).stem().string();
+                    in.oneFrame = true;
+                }
+                break;
+            case FileKind::NanoVdb:
+                throw Error(input,
+                            "a NanoVDB file, which eikon does not read yet; export OpenVDB (.vdb) "
+                            "from the tool that wrote it");
+        }
     }
+    if (choices.hold)
+        for (SourceSpec& src : in.scene.sources)
+            if (src.type == SourceType::VdbSequence) src.holdMissingFrames = true;
     // The light-transport section is read by the methods, in render: checked here, before any
     // work, like the rest of the scene.
-    checkLightTransport(scene);
-    if (!outputDir.empty()) scene.output.directory = outputDir;
-    if (!size.empty()) parseSize(size, scene.render);
-    return scene;
+    checkLightTransport(in.scene);
+    if (!choices.size.empty()) parseSize(choices.size, in.scene.render);
+    return in;
 }
 
 }  // namespace eikon::app

@@ -1,14 +1,33 @@
 #pragma once
-// What `eikon render` and `eikon view` take as input: a scene file, or a VDB cache rendered with
-// the default scene (automatic camera and light), with command-line overrides applied.
+// What `eikon render`, `eikon view` and `eikon bench soak` take as input, told apart by content
+// (core/file_kind.h), not by extension: a scene file; one VDB file; or a VDB sequence, named by a
+// pattern (fluid_data_####.vdb, %04d, $F4) or, with --frames, by any one of its frames. The VDB
+// inputs render with the default scene (automatic camera and light). Command-line overrides
+// applied.
 #include <string>
 
 #include "core/scene.h"
 
 namespace eikon::app {
 
-// `size` is "" or WIDTHxHEIGHT; `outputDir` is "" or a folder. Throws eikon::Error.
-Scene sceneFromInput(const std::string& input, const std::string& outputDir,
-                     const std::string& size);
+struct InputChoices {
+    std::string size;          // "" or WIDTHxHEIGHT
+    bool framesGiven = false;  // --frames: a numbered VDB file stands for its whole sequence
+    bool hold = false;         // --hold: every sequence holds its nearest frame where it has none
+};
+
+struct SceneInput {
+    Scene scene;
+    // The input is one picture's worth: one VDB file, or a scene whose frame_start is its
+    // frame_end (apps/output_files.h then writes no frame number).
+    bool oneFrame = false;
+    // What the command should say once its checks pass ("" when nothing): which sequence a
+    // numbered file given with --frames stands for.
+    std::string note;
+};
+
+// Throws eikon::Error for a missing or unreadable input, an unknown kind of file, a bad scene,
+// and --frames on a VDB file that is not a frame of a sequence.
+SceneInput readSceneInput(const std::string& input, const InputChoices& choices);
 
 }  // namespace eikon::app

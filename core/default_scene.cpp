@@ -6,6 +6,7 @@
 #include "core/scene.h"
 #include "core/vdb_import.h"
 #include "core/vdb_reader.h"
+#include "core/vdb_sequence.h"
 
 namespace eikon {
 namespace {
@@ -23,16 +24,11 @@ float densityVoxelSize(const std::string& path) {
     throw Error(path, "no density grid (looked for the names density, smoke, soot, density.*)");
 }
 
-}  // namespace
-
-Scene defaultSceneForVdb(const std::string& vdbPath) {
-    const float voxel = densityVoxelSize(vdbPath);
+// The look shared by a file and a sequence: `src` with grey smoke on its density and a sun.
+Scene defaultSceneFor(const SourceSpec& src, const std::string& densityFile) {
+    const float voxel = densityVoxelSize(densityFile);
     Scene scene;
-    scene.path = vdbPath;
-    SourceSpec src;
-    src.type = SourceType::Vdb;
-    src.file = vdbPath;
-    src.jsonPath = "(file)";
+    scene.path = src.file;
     scene.sources.push_back(src);
 
     MaterialSpec smoke;
@@ -50,6 +46,31 @@ Scene defaultSceneForVdb(const std::string& vdbPath) {
     scene.lights.push_back(sun);
 
     scene.output.name = "render";
+    return scene;
+}
+
+}  // namespace
+
+Scene defaultSceneForVdb(const std::string& vdbPath) {
+    SourceSpec src;
+    src.type = SourceType::Vdb;
+    src.file = vdbPath;
+    src.jsonPath = "(file)";
+    return defaultSceneFor(src, vdbPath);
+}
+
+Scene defaultSceneForVdbSequence(const std::string& fileOrPattern, bool holdMissingFrames) {
+    const VdbSequence seq = findVdbSequence(fileOrPattern);
+    SourceSpec src;
+    src.type = SourceType::VdbSequence;
+    src.file = seq.pattern();
+    src.jsonPath = "(sequence)";
+    src.holdMissingFrames = holdMissingFrames;
+    Scene scene = defaultSceneFor(src, seq.frames.begin()->second);
+    scene.time.frameStart = seq.first();
+    scene.time.frameEnd = seq.last();
+    // The images take the cache's name and numbering: fluid_data_0007.vdb -> fluid_data_0007.png.
+    scene.output.name = seq.prefix + std::string(size_t(std::max(seq.digits, 1)), '#');
     return scene;
 }
 

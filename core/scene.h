@@ -56,8 +56,9 @@ struct SourceSpec {
     // Extra grid names per canonical field, tried before the built-in aliases,
     // e.g. {"density": ["soot_fine"]}.
     std::map<std::string, std::vector<std::string>> aliases;
-    // VdbSequence: a frame rendered that the sequence lacks between its first and last is an
-    // error, unless the scene says "missing_frames": "hold" (the nearest earlier frame shows).
+    // VdbSequence: a frame rendered that the sequence lacks, between its first and last or
+    // outside them, is an error, unless the scene says "missing_frames": "hold" (or `--hold` on
+    // the command line): the nearest earlier frame shows, or the first before the first.
     bool holdMissingFrames = false;
     // Procedural shapes (Sphere, Box) write `value` (shaped by `profile`) into field `field`,
     // with a linear ramp of width `falloff` (scene units) outside the surface, on a grid of voxel
@@ -366,5 +367,9 @@ Scene parseScene(const std::string& jsonText, const std::string& fileForMessages
 // its density, automatic bounds, resolution and camera, one directional light from the
 // upper right front, black background.
 Scene defaultSceneForVdb(const std::string& vdbPath);
+// The same look on a sequence (core/vdb_sequence.h: one frame's file or a pattern), its frames
+// the scene's frame_start to frame_end, images named as the cache (output.name
+// "fluid_data_####"). `holdMissingFrames` as the scene key "missing_frames": "hold".
+Scene defaultSceneForVdbSequence(const std::string& fileOrPattern, bool holdMissingFrames);
 
 }  // namespace eikon

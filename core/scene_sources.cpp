@@ -18,27 +18,48 @@ SceneSources::SceneSources(const Scene& scene) : scene_(scene) {
         if (src.holdMissingFrames && !seq.missing.empty())
             logWarning(seq.pattern() + ": frames " + seq.missingText() +
                        " are missing; the nearest earlier frame stands in");
+        if (src.holdMissingFrames && seq.first() > scene.time.frameStart)
+            logWarning(seq.pattern() + " starts at frame " + std::to_string(seq.first()) +
+                       "; it stands in for the frames before");
+        if (src.holdMissingFrames && seq.last() < scene.time.frameEnd)
+            logWarning(seq.pattern() + " ends at frame " + std::to_string(seq.last()) +
+                       "; it stands in for the frames after");
     }
 }
 
 namespace {
 
-// A rendered frame the sequence lacks between its first and its last is an error, unless the
-// scene asked to hold the nearest earlier frame: a silent stand-in made a missing cache frame look
-// like smoke that stopped moving.
-void checkFramePresent(const Scene& scene, const SourceSpec& src, const VdbSequence& seq,
-                       int frame) {
-    if (src.holdMissingFrames || frame < seq.first() || frame > seq.last() ||
-        seq.frames.count(frame))
-        return;
-    throw Error(scene.path + ":" + src.jsonPath,
-                seq.pattern() + " has no frame " + std::to_string(frame) +
-                    " (missing: " + seq.missingText() +
-                    "); write it, or set \"missing_frames\": \"hold\" to "
-                    "show the nearest earlier frame instead");
+// A rendered frame the sequence lacks, between its first and its last or outside them, is an
+// error unless the scene asked to hold the nearest frame: a silent stand-in made a missing cache
+// frame look like smoke that stopped moving, and a range past the cache's end write copies of its
+// last frame. The reason lists every frame of `frames` that is absent.
+void checkFramesPresent(const Scene& scene, const SourceSpec& src, const VdbSequence& seq,
+                        const std::vector<int>& frames) {
+    if (src.holdMissingFrames) return;
+    std::vector<int> gaps, outside;
+    for (int frame : frames) {
+        if (seq.frames.count(frame)) continue;
+        (frame < seq.first() || frame > seq.last() ? outside : gaps).push_back(frame);
+    }
+    if (gaps.empty() && outside.empty()) return;
+    // A sequence given on the command line is its own scene: the pattern alone says where.
+    const bool ownScene = scene.path == src.file;
+    std::string reason = (ownScene ? "" : seq.pattern() + " ") + "has frames " + seq.framesText();
+    if (!outside.empty()) reason += "; " + describeFrameRanges(outside) + " outside them";
+    if (!gaps.empty()) reason += "; " + describeFrameRanges(gaps) + " missing between";
+    throw Error(ownScene ? seq.pattern() : scene.path + ":" + src.jsonPath,
+                reason +
+                    "; write them, render the frames it has, or hold the nearest frame "
+                    "(\"missing_frames\": \"hold\" in a scene, --hold on the command line)");
 }
 
 }  // namespace
+
+void checkSequenceFrames(const Scene& scene, const std::vector<int>& frames) {
+    for (const SourceSpec& src : scene.sources)
+        if (src.type == SourceType::VdbSequence)
+            checkFramesPresent(scene, src, findVdbSequence(src.file), frames);
+}
 
 void SceneSources::addProcedural(const SourceSpec& src, const std::string& origin,
                                  FieldRegistry& fields) {
@@ -67,7 +88,7 @@ void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
                 key = src.file;
                 break;
             case SourceType::VdbSequence:
-                checkFramePresent(scene_, src, sequences_.at(s), frame);
+                checkFramesPresent(scene_, src, sequences_.at(s), {frame});
                 key = sequences_.at(s).fileForFrame(frame);
                 break;
             case SourceType::Sphere:

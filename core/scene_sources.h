@@ -5,12 +5,18 @@
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "core/field_registry.h"
 #include "core/scene.h"
 #include "core/vdb_sequence.h"
 
 namespace eikon {
+
+// Throws eikon::Error when a sequence source of `scene` lacks a frame of `frames` and the source
+// does not hold the nearest frame: checked before a command writes anything, so a bad range
+// writes no image. The error lists the absent frames and the frames the sequence has.
+void checkSequenceFrames(const Scene& scene, const std::vector<int>& frames);
 
 class SceneSources {
 public:

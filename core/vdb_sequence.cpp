@@ -6,6 +6,7 @@
 
 #include "core/cache_run_marker.h"
 #include "core/error.h"
+#include "core/frame_pattern.h"
 #include "core/log.h"
 
 namespace fs = std::filesystem;
@@ -31,7 +32,9 @@ bool splitFrameName(const std::string& name, std::string& prefix, std::string& n
     return true;
 }
 
-std::string describeRanges(const std::vector<int>& frames) {
+}  // namespace
+
+std::string describeFrameRanges(const std::vector<int>& frames) {
     std::string out;
     for (size_t i = 0; i < frames.size();) {
         size_t j = i;
@@ -44,10 +47,14 @@ std::string describeRanges(const std::vector<int>& frames) {
     return out;
 }
 
-}  // namespace
-
 std::string VdbSequence::missingText() const {
-    return describeRanges(missing);
+    return describeFrameRanges(missing);
+}
+
+std::string VdbSequence::framesText() const {
+    std::vector<int> present;
+    for (const auto& entry : frames) present.push_back(entry.first);
+    return describeFrameRanges(present);
 }
 
 std::string VdbSequence::pattern() const {
@@ -83,14 +90,18 @@ void checkNoStoppedRun(const VdbSequence& seq) {
 }  // namespace
 
 VdbSequence findVdbSequence(const std::string& fileOrPattern) {
-    const fs::path given(fileOrPattern);
+    // printf's %04d and Houdini's $F4 become ####.
+    const fs::path asGiven(fileOrPattern);
+    const fs::path given =
+        asGiven.parent_path() / toHashPattern(asGiven.filename().string(), fileOrPattern);
     VdbSequence seq;
     seq.directory = given.parent_path().empty() ? "." : given.parent_path().string();
     std::string number;
     if (!splitFrameName(given.filename().string(), seq.prefix, number))
         throw Error(fileOrPattern,
                     "not a frame of a sequence: expected name_####.vdb, name.####.vdb or "
-                    "name####.vdb");
+                    "name####.vdb (the frame number right before .vdb; ####, %04d or $F4 "
+                    "for it in a pattern)");
     std::error_code ec;
     if (!fs::is_directory(seq.directory, ec))
         throw Error(fileOrPattern, "folder '" + seq.directory + "' does not exist");

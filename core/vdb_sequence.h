@@ -1,7 +1,8 @@
 #pragma once
 // Frame sequences of VDB files: name_####.vdb, name.####.vdb and name####.vdb, with the frames
-// missing between the first and the last listed. Whether rendering a missing frame is an error
-// (the default) or shows the nearest earlier frame is the scene's choice (core/scene_sources.cpp).
+// missing between the first and the last listed. Whether rendering a missing frame, or one
+// before the first or after the last, is an error (the default) or shows the nearest frame is
+// the scene's choice (core/scene_sources.cpp).
 #include <map>
 #include <string>
 #include <vector>
@@ -21,13 +22,19 @@ struct VdbSequence {
     std::string pattern() const;
     // The missing frames as ranges, "3-9, 12".
     std::string missingText() const;
+    // The frames present as ranges, "1-2, 10".
+    std::string framesText() const;
     // The file for `frame`: itself, or the nearest earlier one when it is missing, or the first
     // frame when `frame` precedes the sequence.
     const std::string& fileForFrame(int frame) const;
 };
 
+// Frames as ranges, "3-9, 12" (ascending, each once).
+std::string describeFrameRanges(const std::vector<int>& frames);
+
 // `fileOrPattern` is one frame of the sequence ("cache/fluid_data_0001.vdb") or a pattern with
-// #### in place of the number. Throws eikon::Error when no frame is found.
+// ####, %04d or $F4 (core/frame_pattern.h) in place of the number. Throws eikon::Error when no
+// frame is found.
 VdbSequence findVdbSequence(const std::string& fileOrPattern);
 
 }  // namespace eikon

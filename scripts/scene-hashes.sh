@@ -71,23 +71,26 @@ for name in "${scene_list[@]}"; do
     [ -n "$name" ] || continue
     scene="$root/data/scenes/$name.json"
     [ -f "$scene" ] || { echo "eikon: $scene: no such scene" >&2; exit 2; }
+    # One frame per scene: the one named above, else the scene's first (a cached sequence has only
+    # the frames simulated below, and others are an error).
+    first=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1])).get('time', {}).get('frame_start', 0))" "$scene")
     frame=$(frame_of "$name")
-    frame_args=()
-    [ -n "$frame" ] && frame_args=(--frames "$frame")
+    frame_args=(--frames "${frame:-$first}")
     # A scene that reads its own simulation cache ("../../out/x_cache" relative to the scene) is
     # copied two folders deep into the scratch folder, so its cache lands in scratch/out/.
     if grep -q '"simulation"' "$scene" && grep -q '"vdb_sequence"' "$scene"; then
         mkdir -p "$scratch/data/scenes"
         cp "$scene" "$scratch/data/scenes/$name.json"
         scene="$scratch/data/scenes/$name.json"
-        first=$(/usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['time']['frame_start'])" "$scene")
         (cd "$scratch" && "$eikon" simulate "$scene" --frames "${frame:-$first}" \
             >"$scratch/log" 2>&1) || { cat "$scratch/log" >&2; exit 1; }
     fi
     for backend in "${backend_list[@]}"; do
         dir="$scratch/$name.$backend"
-        (cd "$scratch" && "$eikon" render "$scene" --backend "$backend" --size "$size" --exr \
-            -o "$dir" "${frame_args[@]}" >"$scratch/log" 2>&1) || { cat "$scratch/log" >&2; exit 1; }
+        # The EXR only, numbered whether the scene has one frame or many.
+        (cd "$scratch" && "$eikon" render "$scene" --backend "$backend" --size "$size" \
+            -o "$dir/frame_####.exr" "${frame_args[@]}" >"$scratch/log" 2>&1) ||
+            { cat "$scratch/log" >&2; exit 1; }
         # `eikon render` names the backend it renders with: "GPU: <renderer, version>".
         if [ "$backend" = gpu ] && [ -z "$gpu_renderer" ]; then
             gpu_renderer=$(grep -m 1 '^GPU: ' "$scratch/log" || true)

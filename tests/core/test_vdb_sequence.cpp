@@ -48,6 +48,20 @@ TEST_CASE("the three naming styles are recognised and kept apart", "[sequence]")
     CHECK(plain.missing.empty());
 }
 
+TEST_CASE("printf's %04d and Houdini's $F4 find the same frames as ####", "[sequence]") {
+    const std::string dir = test::sharedData("vdb/blender_smoke_c42/");
+    const auto frames = findVdbSequence(dir + "fluid_data_####.vdb").frames;
+    CHECK(findVdbSequence(dir + "fluid_data_%04d.vdb").frames == frames);
+    CHECK(findVdbSequence(dir + "fluid_data_$F4.vdb").frames == frames);
+    CHECK(findVdbSequence(dir + "fluid_data_%d.vdb").frames == frames);  // width is not a filter
+    CHECK(findVdbSequence(dir + "fluid_data_$F4.vdb").pattern() ==
+          findVdbSequence(dir + "fluid_data_####.vdb").pattern());
+    CHECK_THROWS_WITH(findVdbSequence(dir + "fluid_####_data.vdb"),
+                      Catch::Contains("the frame number right before .vdb"));
+    CHECK_THROWS_WITH(findVdbSequence(dir + "fluid##_####.vdb"),
+                      Catch::Contains("two frame-number tokens"));
+}
+
 TEST_CASE("no frames or no number is a clear error", "[sequence][bad-input]") {
     const std::string dir = test::scratchDir("sequence_errors");
     CHECK_THROWS_WITH(findVdbSequence(dir + "/nothing_####.vdb"),
@@ -76,11 +90,23 @@ TEST_CASE("a rendered frame missing from a sequence is an error unless the scene
         CHECK_THROWS_WITH(
             sources.loadFrame(5, fields),
             Catch::StartsWith("gap.json:/sources/0: ") &&
-                Catch::Contains("fluid_data_####.vdb has no frame 5 (missing: 3-9)") &&
-                Catch::Contains("\"missing_frames\": \"hold\""));
+                Catch::Contains("fluid_data_####.vdb has frames 1-2, 10; 5 missing between") &&
+                Catch::Contains("\"missing_frames\": \"hold\"") && Catch::Contains("--hold"));
         sources.loadFrame(10, fields);  // present again
-        sources.loadFrame(12, fields);  // after the last: the last stands in, as documented
+        // Outside the sequence: an error too (it was clamped to the last frame silently).
+        CHECK_THROWS_WITH(sources.loadFrame(12, fields),
+                          Catch::Contains("has frames 1-2, 10; 12 outside them"));
+        CHECK_THROWS_WITH(sources.loadFrame(0, fields), Catch::Contains("0 outside them"));
         CHECK_FALSE(warnings.contains("missing"));  // no warning of gaps before the error line
+    }
+    SECTION("checked up front: every absent frame of a list in one line") {
+        CHECK_NOTHROW(checkSequenceFrames(scene, {1, 2, 10}));
+        CHECK_THROWS_WITH(
+            checkSequenceFrames(scene, {1, 2, 3, 4, 9, 10, 11, 12}),
+            Catch::EndsWith("fluid_data_####.vdb has frames 1-2, 10; 11-12 outside them; "
+                            "3-4, 9 missing between; write them, render the frames it has, or "
+                            "hold the nearest frame (\"missing_frames\": \"hold\" in a scene, "
+                            "--hold on the command line)"));
     }
     SECTION("\"hold\": the nearest earlier frame, the gaps said once") {
         scene.sources[0].holdMissingFrames = true;
@@ -93,5 +119,11 @@ TEST_CASE("a rendered frame missing from a sequence is an error unless the scene
             gapWarnings += w.find("missing") != std::string::npos;
         CHECK(gapWarnings == 1);
         CHECK(warnings.contains("fluid_data_####.vdb: frames 3-9 are missing"));
+        // The end frames stand in beyond the ends.
+        sources.loadFrame(12, fields);
+        CHECK(fields.get("density").origin.find("fluid_data_0010.vdb") != std::string::npos);
+        sources.loadFrame(0, fields);
+        CHECK(fields.get("density").origin.find("fluid_data_0001.vdb") != std::string::npos);
+        CHECK_NOTHROW(checkSequenceFrames(scene, {0, 5, 99}));
     }
 }

@@ -96,8 +96,8 @@ TEST_CASE("eikon render of a scene with a misspelt key names the JSON path", "[c
     checkOneLineError(r, scene + ":/materials/0/absorbtion: ");
     CHECK(contains(r.err, "'absorption'"));  // the "did you mean" hint
     // No image anywhere: not in the output folder, not beside the scene.
-    CHECK_FALSE(fs::exists(outDir + "/misspelt_0000.png"));
-    CHECK_FALSE(fs::exists(outDir + "/misspelt_0000.exr"));
+    CHECK_FALSE(fs::exists(outDir + "/misspelt.png"));
+    CHECK_FALSE(fs::exists(outDir + "/misspelt.exr"));
     for (const auto& entry : fs::recursive_directory_iterator(dir))
         CHECK(entry.path().extension() != ".png");
 }
@@ -111,8 +111,8 @@ TEST_CASE("eikon render writes the homogeneous cube as PNG and EXR", "[cli]") {
                  dir);
     INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
     CHECK(r.exitCode == 0);
-    const std::string png = outDir + "/homogeneous_cube_0000.png";
-    const std::string exr = outDir + "/homogeneous_cube_0000.exr";
+    const std::string png = outDir + "/homogeneous_cube.png";
+    const std::string exr = outDir + "/homogeneous_cube.exr";
     REQUIRE(fs::exists(png));
     REQUIRE(fs::exists(exr));  // the scene asks for EXR too
     CHECK(pngSize(png) == std::make_pair(32, 24));
@@ -142,8 +142,8 @@ TEST_CASE("a render that fails never replaces an existing image", "[cli]") {
 })");
     const std::string outDir = dir + "/out";
     fs::create_directories(outDir);
-    const std::string png = outDir + "/broken_0000.png";
-    const std::string exr = outDir + "/broken_0000.exr";
+    const std::string png = outDir + "/broken.png";
+    const std::string exr = outDir + "/broken.exr";
     writeFile(png, "an earlier image, not to be overwritten");
     writeFile(exr, "an earlier EXR, not to be overwritten");
 
@@ -181,8 +181,8 @@ TEST_CASE("eikon render picks and names its backend", "[cli]") {
     const bool software = contains(gpu.out, "llvmpipe") || contains(gpu.out, "softpipe");
     CHECK(contains(automatic.out, software ? "software rasterizer" : "GPU: "));
     // (Pixel agreement of the two backends is tested in test_view_pass.cpp.)
-    CHECK(pngSize(dir + "/gpu/fog_sphere_spot_0000.png") == std::make_pair(40, 30));
-    CHECK(pngSize(dir + "/cpu/fog_sphere_spot_0000.png") == std::make_pair(40, 30));
+    CHECK(pngSize(dir + "/gpu/fog_sphere_spot.png") == std::make_pair(40, 30));
+    CHECK(pngSize(dir + "/cpu/fog_sphere_spot.png") == std::make_pair(40, 30));
 }
 
 TEST_CASE("eikon render plays a scene's keyframes on the scene's clock", "[cli][animation]") {
@@ -304,13 +304,13 @@ TEST_CASE("eikon render reads mesh files: closed ones render, open ones fail unt
         runEikon("render " + sceneWith("bunny_closed.obj", "") + " -o " + quoted(dir + "/a"), dir);
     INFO("stdout:\n" << closed.out << "stderr:\n" << closed.err);
     CHECK(closed.exitCode == 0);
-    CHECK(fs::exists(dir + "/a/bunny_0000.png"));
+    CHECK(fs::exists(dir + "/a/bunny.png"));
     const RunResult open = runEikon(
         "render " + sceneWith("stanford-bunny.obj", "") + " -o " + quoted(dir + "/b"), dir);
     checkOneLineError(
         open, fs::path(sharedData("meshes/stanford-bunny.obj")).lexically_normal().string());
     CHECK(contains(open.err, "not watertight"));
-    CHECK_FALSE(fs::exists(dir + "/b/bunny_0000.png"));
+    CHECK_FALSE(fs::exists(dir + "/b/bunny.png"));
     const RunResult filled =
         runEikon("render " + sceneWith("stanford-bunny.obj", R"(, "close_holes": 80)") + " -o " +
                      quoted(dir + "/c"),
@@ -347,8 +347,7 @@ TEST_CASE("eikon render fills the shared wine glass with a liquid that rises wit
         INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
         REQUIRE(r.exitCode == 0);
         double red = 0.0;
-        for (const glm::vec4& p : eikon::readExr(dir + "/" + fill + "/wine_0000.exr").pixels)
-            red += p.r;
+        for (const glm::vec4& p : eikon::readExr(dir + "/" + fill + "/wine.exr").pixels) red += p.r;
         return red;
     };
     const double low = glow("0.3"), high = glow("0.9");
