@@ -224,6 +224,9 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("-o,--output", o->outputDir,
                     "cache folder (default: the scene's simulation.cache)");
     cmd->add_option("--frames", o->frames, "frames to write FIRST-LAST, or one frame");
+    cmd->footer(
+        "Examples (from the repository root):\n  eikon simulate data/scenes/smoke_plume.json "
+        "--frames 1-24\n  eikon render data/scenes/smoke_plume.json -o out/plume/\n");
     cmd->callback([o, &exitCode] { exitCode = runSimulate(*o); });
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "core/error.h"
@@ -18,11 +19,28 @@ template <typename GridT, typename Measure>
 void valueRange(const GridT& grid, Measure measure, GridInfo& info) {
     bool first = true;
     for (auto it = grid.cbeginValueOn(); it; ++it) {
-        const double v = measure(*it);
+        const double v = measure(*it);  // NaN when any component is, Inf when one is infinite
+        if (std::isnan(v)) {
+            ++info.nanValues;
+            continue;
+        }
+        if (std::isinf(v)) {
+            ++info.infValues;
+            continue;
+        }
         if (first || v < info.minValue) info.minValue = v;
         if (first || v > info.maxValue) info.maxValue = v;
         first = false;
+        info.anyFinite = true;
     }
+}
+
+// A vector's length, NaN when a component is NaN (a length could hide it as Inf).
+template <typename Vec>
+double lengthOf(const Vec& v) {
+    if (std::isnan(double(v[0])) || std::isnan(double(v[1])) || std::isnan(double(v[2])))
+        return std::numeric_limits<double>::quiet_NaN();
+    return std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
 }
 
 void fillValueRange(const openvdb::GridBase& grid, GridInfo& info) {
@@ -38,10 +56,10 @@ void fillValueRange(const openvdb::GridBase& grid, GridInfo& info) {
             *g, [](int32_t v) { return double(v); }, info);
     else if (auto g = dynamic_cast<const Vec3SGrid*>(&grid))
         valueRange(
-            *g, [](const Vec3s& v) { return double(v.length()); }, info);
+            *g, [](const Vec3s& v) { return lengthOf(v); }, info);
     else if (auto g = dynamic_cast<const Vec3DGrid*>(&grid))
         valueRange(
-            *g, [](const Vec3d& v) { return v.length(); }, info);
+            *g, [](const Vec3d& v) { return lengthOf(v); }, info);
 }
 
 void fillGeometry(const openvdb::GridBase& grid, GridInfo& info) {
@@ -55,11 +73,15 @@ void fillGeometry(const openvdb::GridBase& grid, GridInfo& info) {
         info.indexMin[a] = box.min()[a];
         info.indexMax[a] = box.max()[a];
     }
-    const openvdb::Vec3d lo = grid.transform().indexToWorld(box.min().asVec3d() - 0.5);
-    const openvdb::Vec3d hi = grid.transform().indexToWorld(box.max().asVec3d() + 0.5);
-    for (int a = 0; a < 3; ++a) {
-        info.worldMin[a] = std::min(lo[a], hi[a]);
-        info.worldMax[a] = std::max(lo[a], hi[a]);
+    const openvdb::Vec3d lo = box.min().asVec3d() - 0.5, hi = box.max().asVec3d() + 0.5;
+    for (int corner = 0; corner < 8; ++corner) {
+        const openvdb::Vec3d p = grid.transform().indexToWorld(
+            openvdb::Vec3d(corner & 1 ? hi.x() : lo.x(), corner & 2 ? hi.y() : lo.y(),
+                           corner & 4 ? hi.z() : lo.z()));
+        for (int a = 0; a < 3; ++a) {
+            info.worldMin[a] = corner == 0 ? p[a] : std::min(info.worldMin[a], p[a]);
+            info.worldMax[a] = corner == 0 ? p[a] : std::max(info.worldMax[a], p[a]);
+        }
     }
 }
 
@@ -105,10 +127,19 @@ std::string formatVdbInfo(const VdbFileInfo& info) {
         t << "(" << v[0] << ", " << v[1] << ", " << v[2] << ")";
         return t.str();
     };
+    size_t index = 0;
     for (const GridInfo& g : info.grids) {
-        s << "  " << printable(g.name, 200) << "  " << printable(g.type)
-          << (g.savedAsHalf ? " (stored as half)" : "") << ", class " << printable(g.gridClass)
-          << "\n";
+        // A grid with no name (some tools write one) is labelled, not shown as a blank.
+        const std::string name = g.name.empty() ? "(unnamed grid " + std::to_string(index) + ")"
+                                                : printable(g.name, 200);
+        // Half storage applies to floating-point values only; the file's flag says nothing of
+        // an int32 or bool grid.
+        const bool halfApplies = g.type == "float" || g.type == "double" ||
+                                 g.type.rfind("vec3s", 0) == 0 || g.type.rfind("vec3d", 0) == 0;
+        s << "  " << name << "  " << printable(g.type)
+          << (g.savedAsHalf && halfApplies ? " (stored as half)" : "") << ", class "
+          << printable(g.gridClass) << "\n";
+        ++index;
         if (!g.readable) {
             s << "    not readable here: " << g.problem << "\n";
             continue;
@@ -121,8 +152,12 @@ std::string formatVdbInfo(const VdbFileInfo& info) {
         s << "    index bounds " << triple(g.indexMin) << " -> " << triple(g.indexMax) << "\n";
         s << "    world bounds " << triple(g.worldMin) << " -> " << triple(g.worldMax) << "\n";
         s << "    active voxels " << g.activeVoxels << "\n";
-        s << "    values " << g.minValue << " .. " << g.maxValue
-          << (g.type.rfind("vec3", 0) == 0 ? " (length)" : "") << "\n";
+        if (g.anyFinite)
+            s << "    values " << g.minValue << " .. " << g.maxValue
+              << (g.type.rfind("vec3", 0) == 0 ? " (length)" : "") << "\n";
+        if (g.nanValues + g.infValues > 0)
+            s << "    non-finite values: " << g.nanValues << " NaN, " << g.infValues
+              << " Inf (eikon render refuses a field holding them)\n";
     }
     return s.str();
 }
