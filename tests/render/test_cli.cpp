@@ -14,6 +14,7 @@
 #include "support/test_paths.h"
 
 using eikon::test::checkOneLineError;
+using eikon::test::contains;
 using eikon::test::lines;
 using eikon::test::quoted;
 using eikon::test::readFile;
@@ -26,10 +27,6 @@ using eikon::test::writeFile;
 namespace fs = std::filesystem;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
 
 // Width and height from a PNG's IHDR chunk (big-endian, at bytes 16 and 20).
 std::pair<int, int> pngSize(const std::string& path) {

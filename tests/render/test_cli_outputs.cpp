@@ -13,6 +13,7 @@
 #include "support/test_paths.h"
 
 using eikon::test::checkOneLineError;
+using eikon::test::contains;
 using eikon::test::quoted;
 using eikon::test::readFile;
 using eikon::test::runEikon;
@@ -23,10 +24,6 @@ using eikon::test::writeFile;
 namespace fs = std::filesystem;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
 
 // The file names in `dir` (empty when it does not exist).
 std::set<std::string> filesIn(const std::string& dir) {

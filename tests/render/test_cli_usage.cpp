@@ -9,15 +9,12 @@
 #include "support/test_paths.h"
 
 using eikon::test::checkOneLineError;
+using eikon::test::contains;
 using eikon::test::runEikon;
 using eikon::test::RunResult;
 using eikon::test::scratchDir;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
 
 // A usage error: the one-line form at `where`, with `reason` in it, and exit status 2.
 void checkUsage(const std::string& args, const std::string& where, const std::string& reason) {

@@ -60,6 +60,11 @@ inline RunResult runEikon(const std::string& args, const std::string& dir,
     return r;
 }
 
+// True when `text` holds `part` (a message, a command's output).
+inline bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
 inline std::vector<std::string> lines(const std::string& text) {
     std::vector<std::string> out;
     std::istringstream in(text);
