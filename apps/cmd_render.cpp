@@ -1,3 +1,5 @@
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -12,6 +14,7 @@
 #include "apps/frame_files.h"
 #include "apps/memory_limit_option.h"
 #include "apps/output_files.h"
+#include "apps/render_progress.h"
 #include "apps/scene_driver.h"
 #include "apps/scene_input.h"
 #include "core/error.h"
@@ -34,6 +37,7 @@ struct RenderOptions {
     std::string output;  // -o: a file, a pattern or a folder (apps/output_files.h)
     std::string frames;
     bool hold = false;
+    bool quiet = false;
     std::string size;
     bool stats = false;
     std::string backend = "auto";
@@ -135,22 +139,27 @@ int runRender(const RenderOptions& o) {
 
     BackendChoice choice = chooseBackend(o.backend);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());
-    std::printf("%s\n", choice.description.c_str());
+    if (!o.quiet) std::printf("%s\n", choice.description.c_str());
+    std::fflush(stdout);  // before the progress on stderr
+    RenderProgress progress(frames.size(), o.quiet, isatty(STDERR_FILENO) != 0);
+    renderer.setStageListener([&progress](const std::string& stage) { progress.stage(stage); });
     const bool softwareGl =
         renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());
     int64_t transportSteps = 0;  // before this frame
-    const auto renderFrame = [&](int frame) {
+    const auto renderFrame = [&](size_t index, int frame) {
+        progress.startFrame(index, frame);
         const Image image = renderer.render(driver.frameInputs(frame, scene));
+        progress.pictureDone();
         const auto t0 = std::chrono::steady_clock::now();
         if (files.png) {
             const std::string path = files.path(frame, "png");
             writePng(path, image, scene.render.exposure, scene.render.toneCurve);
-            std::printf("wrote %s\n", path.c_str());
+            if (!o.quiet) std::printf("wrote %s\n", path.c_str());
         }
         if (files.exr) {
             const std::string path = files.path(frame, "exr");
             writeExr(path, image);
-            std::printf("wrote %s\n", path.c_str());
+            if (!o.quiet) std::printf("wrote %s\n", path.c_str());
         }
         const double writeMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
@@ -165,9 +174,10 @@ int runRender(const RenderOptions& o) {
         }
         transportSteps = renderer.transportSteps();
         std::fflush(stdout);
+        progress.endFrame();
     };
     // A live simulation steps through the frames between those listed (SceneDriver).
-    for (int frame : frames) renderFrame(frame);
+    for (size_t i = 0; i < frames.size(); ++i) renderFrame(i, frames[i]);
     return 0;
 }
 
@@ -191,6 +201,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                   "last), show its nearest frame instead of stopping with an error");
     cmd->add_option("--size", o->size, "image size WIDTHxHEIGHT");
     cmd->add_flag("--stats", o->stats, "print time per stage (CPU and GPU)");
+    cmd->add_flag("--quiet", o->quiet,
+                  "print nothing but errors, warnings and --stats: no 'wrote' lines, no progress "
+                  "(which is a line per frame on stderr, and a status line on a terminal)");
     cmd->add_option("--backend", o->backend,
                     "auto (GPU unless OpenGL is software or missing), gpu, or cpu (the CPU twin)")
         ->check(CLI::IsMember({"auto", "gpu", "cpu"}));

@@ -122,6 +122,10 @@ int FrameRenderer::uploads() const {
     return textures_ ? textures_->uploads() : 0;
 }
 
+void FrameRenderer::setStageListener(std::function<void(const std::string&)> listener) {
+    timer_->setListener(std::move(listener));
+}
+
 std::vector<StageTime> FrameRenderer::takeStats() {
     std::vector<StageTime> out = timer_->results();
     timer_->reset();

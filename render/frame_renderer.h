@@ -6,6 +6,7 @@
 // grid changes, the ∇n volume and the octree when n (or, for the octree, κ) changes, and the
 // method when its own cache key does (lights, optics, the volume, its settings). Runs on the GPU
 // (headless EGL context it owns) or on the CPU twin.
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -79,6 +80,8 @@ public:
     const GlContext* context() const { return gl_; }
     // Stage times summed since the last call (load, resample, upload, light, view, readback).
     std::vector<StageTime> takeStats();
+    // `listener` hears each stage's name as it starts (render/gpu_timer.h).
+    void setStageListener(std::function<void(const std::string&)> listener);
     int uploads() const;
     int resamples() const { return resamples_; }
     // How often the light-transport method `method` ran: only when its cache key changed

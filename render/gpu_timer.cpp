@@ -47,6 +47,7 @@ void GpuStageTimer::begin(const std::string& stage) {
                                 "\" is open; stages do not nest");
     }
     openStage_ = stageIndex(stage);
+    if (listener_) listener_(stage);
     if (gpu_) {
         if (pending_.size() >= kMaxPendingQueries) collectPending();
         const GLuint query = acquireQuery();

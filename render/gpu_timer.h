@@ -4,6 +4,7 @@
 // waits on the host. Query results are read in results(), so timing does not stall a frame, or by
 // begin() once 64 wait, so that a caller that never reads them holds a bounded number.
 #include <chrono>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,12 @@ public:
 
     bool gpuTiming() const { return gpu_; }
 
+    // Called with the stage's name at every begin() (a command's progress line shows which stage
+    // a long frame is in); empty: none.
+    void setListener(std::function<void(const std::string&)> listener) {
+        listener_ = std::move(listener);
+    }
+
 private:
     struct Stage {
         std::string name;
@@ -62,6 +69,7 @@ private:
     bool open_ = false;
     size_t openStage_ = 0;
     std::chrono::steady_clock::time_point openedAt_;
+    std::function<void(const std::string&)> listener_;
 };
 
 }  // namespace eikon

@@ -11,6 +11,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "support/contains.h"
+
 namespace eikon::test {
 
 struct PolygonMesh {
@@ -36,10 +38,6 @@ inline PolygonMesh unitCubeTriangles() {
         m.faces.push_back({q[0], q[2], q[3]});
     }
     return m;
-}
-
-inline bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
 }
 
 inline std::string readText(const std::string& path) {

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "support/contains.h"
+
 namespace eikon::test {
 
 struct RunResult {
@@ -58,11 +60,6 @@ inline RunResult runEikon(const std::string& args, const std::string& dir,
     fs::remove(out);
     fs::remove(err);
     return r;
-}
-
-// True when `text` holds `part` (a message, a command's output).
-inline bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
 }
 
 inline std::vector<std::string> lines(const std::string& text) {
