@@ -1,6 +1,7 @@
 #include "core/vdb_export.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 
@@ -8,6 +9,8 @@
 #include "core/error.h"
 #include "core/vdb_file_id.h"
 #include "core/vdb_import.h"
+
+#include <openvdb/tools/Prune.h>
 
 namespace eikon {
 namespace {
@@ -23,6 +26,27 @@ public:
     }
 };
 
+// Voxels of a fog field below kExportPruneTolerance become inactive background (0) in a copy:
+// a solver's decaying smoke leaves values down to denormals (1.4e-45) active, which other tools
+// count, bound and march through as smoke.
+openvdb::FloatGrid::Ptr prunedFog(const openvdb::FloatGrid& grid) {
+    openvdb::FloatGrid::Ptr out = grid.deepCopy();
+    for (auto leaf = out->tree().beginLeaf(); leaf; ++leaf)
+        for (auto v = leaf->beginValueOn(); v; ++v)
+            if (std::abs(*v) < kExportPruneTolerance) {
+                v.setValue(0.0f);
+                v.setValueOff();
+            }
+    // Active tiles hold one value for many voxels: the same rule.
+    for (auto t = out->tree().beginValueOn(); t; ++t)
+        if (t.isTileValue() && std::abs(*t) < kExportPruneTolerance) {
+            t.setValue(0.0f);
+            t.setActiveState(false);
+        }
+    openvdb::tools::pruneInactive(out->tree());
+    return out;
+}
+
 }  // namespace
 
 std::string exportGridName(const std::string& fieldName) {
@@ -36,13 +60,16 @@ void exportVdb(const std::string& path, const FieldRegistry& registry,
     openvdb::GridPtrVec grids;
     for (const std::string& name : fieldNames) {
         const Field& f = registry.get(name);
-        // A shallow copy shares the tree; only the name and metadata change.
-        openvdb::GridBase::Ptr g = f.grid->copyGrid();
+        const bool fog = f.isScalar() && (name == field::kDensity || name == field::kTemperature ||
+                                          name == field::kFlame);
+        auto floatGrid = openvdb::GridBase::grid<openvdb::FloatGrid>(f.grid);
+        // A shallow copy shares the tree; only the name and metadata change. Fog fields are
+        // pruned in a deep copy.
+        openvdb::GridBase::Ptr g =
+            fog && floatGrid ? openvdb::GridBase::Ptr(prunedFog(*floatGrid)) : f.grid->copyGrid();
         g->setName(exportGridName(name));
         g->setSaveFloatAsHalf(false);
-        if (f.isScalar() &&
-            (name == field::kDensity || name == field::kTemperature || name == field::kFlame))
-            g->setGridClass(openvdb::GRID_FOG_VOLUME);
+        if (fog) g->setGridClass(openvdb::GRID_FOG_VOLUME);
         if (f.isVector()) g->setVectorType(openvdb::VEC_CONTRAVARIANT_RELATIVE);
         g->insertMeta("eikon_field", openvdb::StringMetadata(name));
         grids.push_back(g);

@@ -127,3 +127,36 @@ TEST_CASE("a file that is not a VDB is refused, not patched", "[vdb][export][bad
     }
     CHECK(fileBytes(path) == text);
 }
+
+TEST_CASE("export prunes fog voxels below the stated tolerance, nothing else", "[vdb][export]") {
+    ensureOpenVdbInitialized();
+    const std::string dir = test::scratchDir("export_prune");
+    auto density = openvdb::FloatGrid::create(0.0f);
+    auto acc = density->getAccessor();
+    acc.setValue({0, 0, 0}, 1.0f);
+    acc.setValue({1, 0, 0}, kExportPruneTolerance);  // at the tolerance: kept
+    acc.setValue({2, 0, 0}, 1e-7f);
+    acc.setValue({3, 0, 0}, 1.4e-45f);  // a denormal, as a decaying solver leaves
+    acc.setValue({4, 0, 0}, -1e-8f);
+    // An active tile of 8^3 voxels below the tolerance, and one above it.
+    density->tree().addTile(1, openvdb::Coord(64, 0, 0), 1e-9f, true);
+    density->tree().addTile(1, openvdb::Coord(128, 0, 0), 0.5f, true);
+    auto velocity = openvdb::Vec3SGrid::create();
+    velocity->getAccessor().setValue({0, 0, 0}, {1e-9f, 0.0f, 0.0f});  // vectors are not pruned
+    FieldRegistry fields;
+    fields.set("density", density, "test");
+    fields.set("velocity", velocity, "test");
+    const std::string path = dir + "/pruned.vdb";
+    exportVdb(path, fields, {"density", "velocity"});
+
+    FieldRegistry back;
+    importVdb(path, back);
+    const auto d = back.floatGrid("density");
+    CHECK(d->activeVoxelCount() == 2 + 512);
+    for (auto it = d->cbeginValueOn(); it; ++it) CHECK(std::abs(*it) >= kExportPruneTolerance);
+    CHECK(d->tree().getValue({2, 0, 0}) == 0.0f);  // inactive and exactly background
+    CHECK(d->tree().getValue({3, 0, 0}) == 0.0f);
+    CHECK(back.get("velocity").grid->activeVoxelCount() == 1);
+    // The registry's own grid is untouched: export prunes a copy.
+    CHECK(density->activeVoxelCount() == 5 + 2 * 512);
+}
