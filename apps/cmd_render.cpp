@@ -38,6 +38,7 @@ struct RenderOptions {
     std::string frames;
     bool hold = false;
     bool quiet = false;
+    std::string up;
     std::string size;
     bool stats = false;
     std::string backend = "auto";
@@ -122,6 +123,7 @@ int runRender(const RenderOptions& o) {
     choices.size = o.size;
     choices.framesGiven = !o.frames.empty();
     choices.hold = o.hold;
+    choices.up = o.up;
     SceneInput input = readSceneInput(o.input, choices);
     Scene& scene = input.scene;
     // Before --frames: a live simulation starts at the frame_start the scene gives, whichever
@@ -131,7 +133,8 @@ int runRender(const RenderOptions& o) {
     // Every check before the first file: a bad range or -o writes nothing.
     checkSequenceFrames(scene, frames);
     const OutputFiles files = resolveOutputFiles(o.output, scene.output, frames, input.oneFrame);
-    if (!input.note.empty()) logInfo(input.note);
+    if (!o.quiet)
+        for (const std::string& note : input.notes) logInfo(note);
     std::error_code ec;
     fs::create_directories(files.directory, ec);
     if (ec) throw Error(files.directory, "cannot create the output folder: " + ec.message());
@@ -200,6 +203,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                   "where a VDB sequence lacks a frame (a gap, or before its first or after its "
                   "last), show its nearest frame instead of stopping with an error");
     cmd->add_option("--size", o->size, "image size WIDTHxHEIGHT");
+    cmd->add_option("--up", o->up,
+                    "a VDB input's up axis for the automatic camera: x, y or z (default: the "
+                    "file's metadata or writer, else the sequence's motion, else y)")
+        ->check(CLI::IsMember({"x", "y", "z"}));
     cmd->add_flag("--stats", o->stats, "print time per stage (CPU and GPU)");
     cmd->add_flag("--quiet", o->quiet,
                   "print nothing but errors, warnings and --stats: no 'wrote' lines, no progress "

@@ -14,6 +14,7 @@
 #include "apps/view_handles.h"
 #include "apps/viewer.h"
 #include "core/error.h"
+#include "core/log.h"
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 
@@ -28,6 +29,7 @@ struct ViewOptions {
     std::string screenshot;
     std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
     bool hold = false;
+    std::string up;
 };
 
 ScriptedDrag parseDrag(const std::string& text) {
@@ -50,7 +52,10 @@ int runView(const ViewOptions& o) {
     InputChoices choices;
     choices.size = o.size;
     choices.hold = o.hold;
-    Scene scene = readSceneInput(o.input, choices).scene;
+    choices.up = o.up;
+    const SceneInput input = readSceneInput(o.input, choices);
+    for (const std::string& note : input.notes) logInfo(note);
+    Scene scene = input.scene;
     // Before the window opens, so that a bad scene or --drag fails without a display.
     SceneDriver driver(scene);
     ViewHandles handles(driver, scene);
@@ -85,6 +90,8 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "scene.json, cache.vdb, or a VDB sequence (fluid_data_####.vdb, %04d, $F4)")
         ->required();
     cmd->add_option("--size", o->size, "window size WIDTHxHEIGHT");
+    cmd->add_option("--up", o->up, "a VDB input's up axis for the automatic camera: x, y or z")
+        ->check(CLI::IsMember({"x", "y", "z"}));
     cmd->add_flag("--hold", o->hold,
                   "where a VDB sequence lacks a frame, show its nearest frame instead of stopping");
     cmd->add_option("--backend", o->backend,

@@ -13,10 +13,10 @@ namespace eikon::app {
 OrbitCamera::OrbitCamera(const CameraSpec& spec, const Bounds3& volume, int width, int height)
     : base_(spec) {
     const CameraFrame frame = makeCameraFrame(spec, volume, width, height);
-    target_ = spec.automatic ? volume.center() : spec.lookAt;
+    target_ = spec.automatic ? automaticCameraBox(spec, volume).center() : spec.lookAt;
     offset_ = frame.origin - target_;
     base_.automatic = false;
-    if (spec.automatic) base_.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    if (spec.automatic) base_.up = automaticCameraUp(spec);
 }
 
 void OrbitCamera::orbit(float yawRadians, float pitchRadians) {

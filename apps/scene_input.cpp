@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/density_view.h"
 #include "core/error.h"
 #include "core/file_kind.h"
 #include "core/frame_pattern.h"
@@ -26,9 +27,10 @@ bool isPattern(const std::string& input) {
     return hasHashRun(toHashPattern(std::filesystem::path(input).filename().string(), input));
 }
 
-// One VDB file given with --frames: the sequence it is a frame of, said in one line (`note`); a
-// file that is not numbered has no other frames to render.
-Scene sequenceOfFile(const std::string& input, bool hold, std::string& note) {
+// One VDB file given with --frames: the sequence it is a frame of, said in one line; a file
+// that is not numbered has no other frames to render.
+Scene sequenceOfFile(const std::string& input, bool hold, const DefaultCamera& camera,
+                     std::vector<std::string>& notes) {
     VdbSequence seq;
     try {
         seq = findVdbSequence(input);
@@ -37,28 +39,40 @@ Scene sequenceOfFile(const std::string& input, bool hold, std::string& note) {
                     "one file, not a frame of a sequence (name_0001.vdb), so --frames has no "
                     "other frames to render; render it without --frames");
     }
-    note = input + " is a frame of " + seq.pattern() + " (frames " + seq.framesText() +
-           "): --frames renders frames of that sequence";
-    return defaultSceneForVdbSequence(input, hold);
+    notes.push_back(input + " is a frame of " + seq.pattern() + " (frames " + seq.framesText() +
+                    "): --frames renders frames of that sequence");
+    std::string note;
+    Scene scene = defaultSceneForVdbSequence(input, hold, camera, note);
+    if (!note.empty()) notes.push_back(note);
+    return scene;
 }
 
 }  // namespace
 
 SceneInput readSceneInput(const std::string& input, const InputChoices& choices) {
     SceneInput in;
+    DefaultCamera camera;
+    if (!choices.up.empty()) {
+        camera.up = parseUpAxis(choices.up);
+        if (!camera.up) throw Error("--up", "expected x, y or z, got '" + choices.up + "'");
+    }
+    std::string note;
     if (isPattern(input)) {
-        in.scene = defaultSceneForVdbSequence(input, choices.hold);
+        in.scene = defaultSceneForVdbSequence(input, choices.hold, camera, note);
     } else {
         switch (sniffFileKind(input)) {
             case FileKind::Json:
+                if (camera.up)
+                    throw Error("--up", "applies to a VDB input's automatic camera; " + input +
+                                            " is a scene, whose camera is its own");
                 in.scene = loadScene(input);
                 in.oneFrame = in.scene.time.frameStart == in.scene.time.frameEnd;
                 break;
             case FileKind::Vdb:
                 if (choices.framesGiven) {
-                    in.scene = sequenceOfFile(input, choices.hold, in.note);
+                    in.scene = sequenceOfFile(input, choices.hold, camera, in.notes);
                 } else {
-                    in.scene = defaultSceneForVdb(input);
+                    in.scene = defaultSceneForVdb(input, camera, note);
                     in.scene.output.name = std::filesystem::path(input).stem().string();
                     in.oneFrame = true;
                 }
@@ -69,6 +83,7 @@ SceneInput readSceneInput(const std::string& input, const InputChoices& choices)
                             "from the tool that wrote it");
         }
     }
+    if (!note.empty()) in.notes.push_back(note);
     if (choices.hold)
         for (SourceSpec& src : in.scene.sources)
             if (src.type == SourceType::VdbSequence) src.holdMissingFrames = true;

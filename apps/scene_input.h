@@ -5,6 +5,7 @@
 // inputs render with the default scene (automatic camera and light). Command-line overrides
 // applied.
 #include <string>
+#include <vector>
 
 #include "core/scene.h"
 
@@ -14,6 +15,7 @@ struct InputChoices {
     std::string size;          // "" or WIDTHxHEIGHT
     bool framesGiven = false;  // --frames: a numbered VDB file stands for its whole sequence
     bool hold = false;         // --hold: every sequence holds its nearest frame where it has none
+    std::string up;            // --up x|y|z for a VDB input's automatic camera; "" lets it choose
 };
 
 struct SceneInput {
@@ -21,9 +23,9 @@ struct SceneInput {
     // The input is one picture's worth: one VDB file, or a scene whose frame_start is its
     // frame_end (apps/output_files.h then writes no frame number).
     bool oneFrame = false;
-    // What the command should say once its checks pass ("" when nothing): which sequence a
-    // numbered file given with --frames stands for.
-    std::string note;
+    // What the command should say once its checks pass: which sequence a numbered file given
+    // with --frames stands for, how a VDB input's camera chose its up axis.
+    std::vector<std::string> notes;
 };
 
 // Throws eikon::Error for a missing or unreadable input, an unknown kind of file, a bad scene,

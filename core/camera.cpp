@@ -3,10 +3,28 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 namespace eikon {
+
+Bounds3 automaticCameraBox(const CameraSpec& spec, const Bounds3& volume) {
+    return spec.framed ? *spec.framed : volume;
+}
+
+glm::vec3 automaticCameraUp(const CameraSpec& spec) {
+    const glm::vec3 a = glm::abs(spec.up);
+    if (a.z > a.x && a.z > a.y) return {0, 0, 1};
+    if (a.x > a.y && a.x > a.z) return {1, 0, 0};
+    return {0, 1, 0};
+}
+
+glm::vec3 frontOf(glm::vec3 up) {
+    // z up (Blender): from −y, Blender's front view; x up: from +z; y up (OpenVDB, Houdini): +z.
+    if (up.z > 0.5f) return {0, -1, 0};
+    return {0, 0, 1};
+}
 
 CameraFrame makeCameraFrame(const CameraSpec& spec, const Bounds3& volume, int width, int height) {
     CameraFrame cam;
@@ -14,12 +32,13 @@ CameraFrame makeCameraFrame(const CameraSpec& spec, const Bounds3& volume, int w
     cam.tanHalfFovX = std::tan(glm::radians(spec.horizontalFovDeg) * 0.5f);
     glm::vec3 position = spec.position, lookAt = spec.lookAt, up = spec.up;
     if (spec.automatic) {
+        const Bounds3 box = automaticCameraBox(spec, volume);
         const float tanHalfNarrow = std::min(cam.tanHalfFovX, cam.tanHalfFovX / cam.aspect);
-        const float radius = 0.5f * glm::length(volume.size());
+        const float radius = 0.5f * glm::length(box.size());
         const float distance = radius / std::sin(std::atan(tanHalfNarrow));
-        lookAt = volume.center();
-        position = lookAt + distance * glm::normalize(glm::vec3(0.0f, 0.25f, 1.0f));
-        up = glm::vec3(0, 1, 0);
+        lookAt = box.center();
+        up = automaticCameraUp(spec);
+        position = lookAt + distance * glm::normalize(frontOf(up) + 0.25f * up);
     }
     cam.origin = position;
     cam.forward = glm::normalize(lookAt - position);

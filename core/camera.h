@@ -19,8 +19,16 @@ struct CameraFrame {
 };
 
 // Resolves "auto" (look at the box's centre from the front, slightly above, far enough that the
-// box's bounding sphere fits the narrower field of view) and builds the basis.
+// box's bounding sphere fits the narrower field of view) and builds the basis. The box is
+// spec.framed when set, else `volume`; up is spec.up's axis, and "the front" is +z for y or x up,
+// −y for z up (Blender's front view).
 CameraFrame makeCameraFrame(const CameraSpec& spec, const Bounds3& volume, int width, int height);
+
+// The parts of "auto": the box framed, the up axis (+x, +y or +z, the largest component of
+// spec.up), and the side looked from for an up axis.
+Bounds3 automaticCameraBox(const CameraSpec& spec, const Bounds3& volume);
+glm::vec3 automaticCameraUp(const CameraSpec& spec);
+glm::vec3 frontOf(glm::vec3 up);
 
 // Where the world point p shows on a width-wide image, in pixels from the image's top-left
 // corner (pixel (x, y)'s centre is at (x + 0.5, y + 0.5)): the inverse of the viewing ray through

@@ -1,7 +1,10 @@
 #include <algorithm>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/camera.h"
+#include "core/density_view.h"
 #include "core/error.h"
 #include "core/scene.h"
 #include "core/vdb_import.h"
@@ -11,26 +14,59 @@
 namespace eikon {
 namespace {
 
-// The density grid's voxel size, read from metadata only (no voxel data), so that the default
-// material can be stated per voxel like vdb_render's -scatter/-absorb: a cache of any scale then
-// renders with the same look.
-float densityVoxelSize(const std::string& path) {
-    VdbReader reader(path);
-    for (size_t i = 0; i < reader.entries().size(); ++i)
-        if (canonicalFieldFor(reader.entries()[i].name) == "density") {
-            const openvdb::Vec3d vs = reader.readGrid(i)->voxelSize();
-            return float(std::min({vs.x(), vs.y(), vs.z()}));
+// The up axis of the automatic camera, by the rule docs/scene-format.md states: the user's
+// choice; else the writer's (core/density_view.h); else, for a sequence, the axis along which the
+// density's centre moved most from its first frame to its last, when it moved more than two
+// voxels and twice as far as along any other axis (smoke rises, a splash falls: the axis, not
+// the sign); else y. `reason` says which.
+glm::vec3 chooseUp(const std::optional<glm::vec3>& given, const std::vector<DensityView>& views,
+                   std::string& reason) {
+    if (given) {
+        reason = "";
+        return *given;
+    }
+    if (views.front().up) {
+        reason = views.front().upReason;
+        return *views.front().up;
+    }
+    if (views.size() > 1 && views.front().visible && views.back().visible) {
+        const glm::vec3 d = glm::abs(views.back().centroid - views.front().centroid);
+        int axis = 0;
+        for (int a = 1; a < 3; ++a)
+            if (d[a] > d[axis]) axis = a;
+        const float second = std::max(d[(axis + 1) % 3], d[(axis + 2) % 3]);
+        if (d[axis] > 2.0f * views.front().voxelSize && d[axis] > 2.0f * second) {
+            glm::vec3 up(0.0f);
+            up[axis] = 1.0f;
+            reason = std::string("the density moves along ") + "xyz"[axis] +
+                     " over the sequence, more than along the other axes";
+            return up;
         }
-    throw Error(path, "no density grid (looked for the names density, smoke, soot, density.*)");
+    }
+    reason = "";
+    return {0, 1, 0};
 }
 
-// The look shared by a file and a sequence: `src` with grey smoke on its density and a sun.
-Scene defaultSceneFor(const SourceSpec& src, const std::string& densityFile) {
-    const float voxel = densityVoxelSize(densityFile);
+// The look shared by a file and a sequence: `src` with grey smoke on its density and a sun,
+// the camera framing what shows in `framedFiles` (one file, or a sequence's first, middle and
+// last frames) as one box, the same every frame.
+Scene defaultSceneFor(const SourceSpec& src, const std::vector<std::string>& framedFiles,
+                      const DefaultCamera& camera, std::string& note) {
+    std::vector<DensityView> views;
+    for (const std::string& file : framedFiles) views.push_back(viewDensity(file));
+    const float voxel = views.front().voxelSize;
     Scene scene;
     scene.path = src.file;
     scene.sources.push_back(src);
-
+    Bounds3 framed;
+    for (const DensityView& v : views)
+        if (v.visible) framed = framed.unite(*v.visible);
+    if (framed.valid()) scene.camera.framed = framed;
+    std::string reason;
+    scene.camera.up = chooseUp(camera.up, views, reason);
+    const char* axis = scene.camera.up.x > 0.5f ? "x" : scene.camera.up.z > 0.5f ? "z" : "y";
+    if (!reason.empty())
+        note = std::string("camera up +") + axis + ": " + reason + " (--up x|y|z to choose)";
     MaterialSpec smoke;
     smoke.name = "smoke";
     smoke.field = "density";
@@ -40,7 +76,10 @@ Scene defaultSceneFor(const SourceSpec& src, const std::string& densityFile) {
 
     LightSpec sun;
     sun.type = LightType::Directional;
-    sun.direction = -glm::normalize(glm::vec3(1.0f, 1.0f, 0.5f));
+    // From the upper right front as the camera sees it, whichever axis is up: (1, 1, 0.5) in
+    // y-up terms (right, up, front).
+    const glm::vec3 up = scene.camera.up, front = frontOf(up), right = glm::cross(up, front);
+    sun.direction = -glm::normalize(right + up + 0.5f * front);
     // 4π: vdb_render leaves out the phase function's 1/(4π); this gives its brightness.
     sun.intensity = 12.566371f;
     scene.lights.push_back(sun);
@@ -51,22 +90,31 @@ Scene defaultSceneFor(const SourceSpec& src, const std::string& densityFile) {
 
 }  // namespace
 
-Scene defaultSceneForVdb(const std::string& vdbPath) {
+Scene defaultSceneForVdb(const std::string& vdbPath, const DefaultCamera& camera,
+                         std::string& note) {
     SourceSpec src;
     src.type = SourceType::Vdb;
     src.file = vdbPath;
     src.jsonPath = "(file)";
-    return defaultSceneFor(src, vdbPath);
+    return defaultSceneFor(src, {vdbPath}, camera, note);
 }
 
-Scene defaultSceneForVdbSequence(const std::string& fileOrPattern, bool holdMissingFrames) {
+Scene defaultSceneForVdbSequence(const std::string& fileOrPattern, bool holdMissingFrames,
+                                 const DefaultCamera& camera, std::string& note) {
     const VdbSequence seq = findVdbSequence(fileOrPattern);
     SourceSpec src;
     src.type = SourceType::VdbSequence;
     src.file = seq.pattern();
     src.jsonPath = "(sequence)";
     src.holdMissingFrames = holdMissingFrames;
-    Scene scene = defaultSceneFor(src, seq.frames.begin()->second);
+    // Framed once, on the first, middle and last frames: a plume that grows stays in view, and
+    // the camera does not move as it grows (it reframed every frame, so the plume seemed to
+    // shrink).
+    std::vector<std::string> framed{seq.frames.begin()->second};
+    const auto middle = seq.frames.lower_bound(seq.first() + (seq.last() - seq.first()) / 2);
+    if (middle->second != framed.back()) framed.push_back(middle->second);
+    if (seq.frames.rbegin()->second != framed.back()) framed.push_back(seq.frames.rbegin()->second);
+    Scene scene = defaultSceneFor(src, framed, camera, note);
     scene.time.frameStart = seq.first();
     scene.time.frameEnd = seq.last();
     // The images take the cache's name and numbering: fluid_data_0007.vdb -> fluid_data_0007.png.

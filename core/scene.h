@@ -233,7 +233,12 @@ struct CameraSpec {
     bool automatic = true;  // "camera": "auto" frames the render volume
     glm::vec3 position{0.0f, 0.0f, 5.0f};
     glm::vec3 lookAt{0.0f};
+    // Automatic: the world axis that is up (+x, +y or +z), which also picks the side the camera
+    // looks from (core/camera.h).
     glm::vec3 up{0.0f, 1.0f, 0.0f};
+    // Automatic: the box to frame, the same every frame; unset frames each frame's render volume.
+    // The default scene of a VDB file or sequence sets it (core/default_scene.cpp).
+    std::optional<Bounds3> framed;
     float horizontalFovDeg = 45.0f;  // in (0, 180)
 };
 
@@ -364,12 +369,21 @@ Scene loadScene(const std::string& path);
 Scene parseScene(const std::string& jsonText, const std::string& fileForMessages);
 
 // The scene `eikon render cache.vdb` uses: the file as its only source, a grey smoke material on
-// its density, automatic bounds, resolution and camera, one directional light from the
-// upper right front, black background.
-Scene defaultSceneForVdb(const std::string& vdbPath);
+// its density, automatic bounds and resolution, one directional light from the upper right
+// front, black background, and an automatic camera framing the density that shows (at least
+// kVisibleFraction of its largest value, core/density_view.h), up along `camera.up` or the axis
+// the file implies (the rule: core/default_scene.cpp chooseUp). `note` gets a line saying how the
+// up axis was chosen when the data chose it ("" otherwise).
+struct DefaultCamera {
+    std::optional<glm::vec3> up;  // --up
+};
+Scene defaultSceneForVdb(const std::string& vdbPath, const DefaultCamera& camera,
+                         std::string& note);
 // The same look on a sequence (core/vdb_sequence.h: one frame's file or a pattern), its frames
 // the scene's frame_start to frame_end, images named as the cache (output.name
-// "fluid_data_####"). `holdMissingFrames` as the scene key "missing_frames": "hold".
-Scene defaultSceneForVdbSequence(const std::string& fileOrPattern, bool holdMissingFrames);
+// "fluid_data_####"), framed once on its first, middle and last frames. `holdMissingFrames` as
+// the scene key "missing_frames": "hold".
+Scene defaultSceneForVdbSequence(const std::string& fileOrPattern, bool holdMissingFrames,
+                                 const DefaultCamera& camera, std::string& note);
 
 }  // namespace eikon

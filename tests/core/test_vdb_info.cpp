@@ -17,7 +17,8 @@ using namespace eikon;
 namespace {
 
 std::string writeGrids(const std::string& name, openvdb::GridPtrVec grids) {
-    const std::string path = test::scratchDir("vdb_info") + "/" + name;
+    // A folder per file: scratchDir empties its folder, and ctest runs cases in parallel.
+    const std::string path = test::scratchDir("vdb_info_" + name) + "/" + name;
     openvdb::io::File(path).write(grids);
     return path;
 }

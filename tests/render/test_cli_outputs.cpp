@@ -196,6 +196,11 @@ TEST_CASE("inputs are told apart by content, not by extension", "[cli][output][b
     REQUIRE(r.exitCode == 0);
     CHECK(filesIn(dir + "/b") == std::set<std::string>{"boxed.png"});
 
+    // --up is for a VDB input's automatic camera; a scene's camera is its own.
+    r = render(quoted(dir + "/scene.txt") + " --up z", dir);
+    checkOneLineError(r, "--up: ");
+    CHECK(contains(r.err, "is a scene, whose camera is its own"));
+
     writeFile(dir + "/picture.vdb", std::string("\x89PNG\r\n\x1a\n", 8) + "rest");
     r = render(quoted(dir + "/picture.vdb"), dir);
     checkOneLineError(r, dir + "/picture.vdb: ");

@@ -29,7 +29,7 @@ std::string cubeArgs(const std::string& out) {
 
 TEST_CASE("several frames: a parseable line each on stderr with count and times",
           "[cli][progress]") {
-    const std::string dir = scratchDir("cli_progress");
+    const std::string dir = scratchDir("cli_progress_lines");
     const RunResult r = runEikon(cubeArgs(dir + "/a/"), dir);
     INFO(r.out << r.err);
     REQUIRE(r.exitCode == 0);
@@ -46,8 +46,8 @@ TEST_CASE("several frames: a parseable line each on stderr with count and times"
     CHECK(contains(r.out, "wrote "));
 }
 
-TEST_CASE("--quiet prints nothing on success", "[cli][progress]") {
-    const std::string dir = scratchDir("cli_progress");
+TEST_CASE("render with --quiet prints nothing on success", "[cli][progress]") {
+    const std::string dir = scratchDir("cli_progress_quiet");
     const RunResult r = runEikon(cubeArgs(dir + "/q/") + " --quiet", dir);
     REQUIRE(r.exitCode == 0);
     CHECK(r.out.empty());
@@ -57,7 +57,7 @@ TEST_CASE("--quiet prints nothing on success", "[cli][progress]") {
 
 TEST_CASE("on a terminal a status line names the stage, and is erased", "[cli][progress]") {
     // script(1) (util-linux, Essential in Debian) gives the command a terminal.
-    const std::string dir = scratchDir("cli_progress");
+    const std::string dir = scratchDir("cli_progress_tty");
     const std::string binary = std::string(EIKON_BINARY_DIR) + "/apps/eikon";
     const std::string log = dir + "/tty.txt";
     const std::string command = "script -qec " +

@@ -17,8 +17,10 @@ using eikon::test::scratchDir;
 namespace {
 
 // A usage error: the one-line form at `where`, with `reason` in it, and exit status 2.
-void checkUsage(const std::string& args, const std::string& where, const std::string& reason) {
-    const std::string dir = scratchDir("cli_usage");
+// `dir` is the test case's own folder: ctest runs cases in parallel, and runEikon keeps its output
+// files there.
+void checkUsage(const std::string& dir, const std::string& args, const std::string& where,
+                const std::string& reason) {
     const RunResult r = runEikon(args, dir);
     INFO("eikon " << args);
     checkOneLineError(r, where);
@@ -29,27 +31,32 @@ void checkUsage(const std::string& args, const std::string& where, const std::st
 }  // namespace
 
 TEST_CASE("typos name the closest command or option", "[cli][usage]") {
-    checkUsage("rendr scene.json", "rendr: ", "unknown command; did you mean 'render'?");
-    checkUsage("bench smok", "smok: ", "did you mean 'smoke'?");
-    checkUsage("render scene.json --sise 64x48",
+    const std::string dir = scratchDir("cli_usage_typos");
+    checkUsage(dir, "rendr scene.json", "rendr: ", "unknown command; did you mean 'render'?");
+    checkUsage(dir, "bench smok", "smok: ", "did you mean 'smoke'?");
+    checkUsage(dir, "render scene.json --sise 64x48",
                "render: ", "--sise: unknown option; did you mean --size?");
-    checkUsage("render scene.json --frame 3", "render: ", "did you mean --frames?");
-    checkUsage("render scene.json --size=64x48 --exrr", "render: ", "did you mean --exr?");
-    checkUsage("render scene.json --zzzzzz", "render: ", "--zzzzzz: unknown option (eikon render");
+    checkUsage(dir, "render scene.json --frame 3", "render: ", "did you mean --frames?");
+    checkUsage(dir, "render scene.json --size=64x48 --exrr", "render: ", "did you mean --exr?");
+    checkUsage(dir, "render scene.json --zzzzzz",
+               "render: ", "--zzzzzz: unknown option (eikon render");
     // Far from every name: no guess.
-    checkUsage("render scene.json --colour 1", "render: ", "--colour: unknown option (eikon");
+    checkUsage(dir, "render scene.json --colour 1", "render: ", "--colour: unknown option (eikon");
 }
 
 TEST_CASE("missing and rejected arguments are one line too", "[cli][usage]") {
-    checkUsage("", "eikon: ", "a command is required: info, render, diff, view, simulate, bench");
-    checkUsage("render", "render: ", "input is required (eikon render --help)");
-    checkUsage("render scene.json --backend vulkan", "render: ", "--backend");
-    checkUsage("render a.json b.json", "render: ", "'b.json': unexpected argument");
-    checkUsage("bench", "bench: ", "a command is required: smoke,");
+    const std::string dir = scratchDir("cli_usage_missing");
+    checkUsage(dir, "",
+               "eikon: ", "a command is required: info, render, diff, view, simulate, bench");
+    checkUsage(dir, "render", "render: ", "input is required (eikon render --help)");
+    checkUsage(dir, "render scene.json --backend vulkan", "render: ", "--backend");
+    checkUsage(dir, "render a.json b.json", "render: ", "'b.json': unexpected argument");
+    checkUsage(dir, "bench", "bench: ", "a command is required: smoke,");
+    checkUsage(dir, "render cache.vdb --up w", "render: ", "--up: w not in {x,y,z}");
 }
 
 TEST_CASE("help per command shows examples, and --version the version", "[cli][usage]") {
-    const std::string dir = scratchDir("cli_usage");
+    const std::string dir = scratchDir("cli_usage_help");
     const RunResult help = runEikon("render --help", dir);
     CHECK(help.exitCode == 0);
     CHECK(contains(help.out, "--hold"));

@@ -1,0 +1,113 @@
+#include "core/density_view.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/error.h"
+#include "core/vdb_import.h"
+#include "core/vdb_reader.h"
+
+namespace eikon {
+namespace {
+
+// The world box around index box `box`'s outer voxel faces: all eight corners through the
+// transform, so a rotated grid's box holds it.
+Bounds3 worldBox(const openvdb::math::Transform& xform, const openvdb::CoordBBox& box) {
+    const openvdb::Vec3d lo = box.min().asVec3d() - 0.5, hi = box.max().asVec3d() + 0.5;
+    Bounds3 out;
+    for (int corner = 0; corner < 8; ++corner) {
+        const openvdb::Vec3d p = xform.indexToWorld(openvdb::Vec3d(corner & 1 ? hi.x() : lo.x(),
+                                                                   corner & 2 ? hi.y() : lo.y(),
+                                                                   corner & 4 ? hi.z() : lo.z()));
+        const glm::vec3 q(float(p.x()), float(p.y()), float(p.z()));
+        out.min = corner == 0 ? q : glm::min(out.min, q);
+        out.max = corner == 0 ? q : glm::max(out.max, q);
+    }
+    return out;
+}
+
+// Up from the file: metadata a writer left ("up_axis", "upAxis", "up"), else what its writer is
+// known to use. Houdini and OpenVDB's tools are y-up; Blender is z-up and its Mantaflow caches
+// carry no creator, but their grid names (flags, phi_*) are Mantaflow's own.
+void upFromWriter(const VdbReader& reader, DensityView& view) {
+    for (const char* key : {"up_axis", "upAxis", "up"}) {
+        const openvdb::Metadata::ConstPtr m = reader.fileMetadata()[key];
+        if (!m) continue;
+        if (const auto axis = parseUpAxis(m->str())) {
+            view.up = axis;
+            view.upReason = std::string("the file's metadata ") + key + " = " + m->str();
+            return;
+        }
+    }
+    const std::string creator = reader.creator();
+    if (creator.find("Blender") != std::string::npos) {
+        view.up = glm::vec3(0, 0, 1);
+        view.upReason = "written by Blender, which is z-up";
+        return;
+    }
+    if (creator.find("Houdini") != std::string::npos) {
+        view.up = glm::vec3(0, 1, 0);
+        view.upReason = "written by Houdini, which is y-up";
+        return;
+    }
+    bool flags = false, phi = false;
+    for (const VdbReader::Entry& e : reader.entries()) {
+        flags = flags || e.name == "flags";
+        phi = phi || e.name.rfind("phi_", 0) == 0;
+    }
+    if (flags && phi) {
+        view.up = glm::vec3(0, 0, 1);
+        view.upReason = "a Blender Mantaflow cache (grids flags, phi_*), which is z-up";
+    }
+}
+
+}  // namespace
+
+std::optional<glm::vec3> parseUpAxis(const std::string& text) {
+    std::string t;
+    for (char c : text) t += char(std::tolower(static_cast<unsigned char>(c)));
+    if (!t.empty() && t[0] == '+') t.erase(0, 1);
+    if (t == "x") return glm::vec3(1, 0, 0);
+    if (t == "y") return glm::vec3(0, 1, 0);
+    if (t == "z") return glm::vec3(0, 0, 1);
+    return std::nullopt;
+}
+
+DensityView viewDensity(const std::string& path) {
+    ensureOpenVdbInitialized();
+    VdbReader reader(path);
+    DensityView view;
+    upFromWriter(reader, view);
+    for (size_t i = 0; i < reader.entries().size(); ++i) {
+        if (canonicalFieldFor(reader.entries()[i].name) != "density") continue;
+        const openvdb::GridBase::Ptr base = reader.readGrid(i);
+        const auto grid = openvdb::GridBase::grid<openvdb::FloatGrid>(base);
+        if (!grid)
+            throw Error(path, "density grid '" + reader.entries()[i].name + "' is " +
+                                  base->valueType() + ", expected float");
+        const openvdb::Vec3d vs = grid->voxelSize();
+        view.voxelSize = float(std::min({vs.x(), vs.y(), vs.z()}));
+        float largest = 0.0f;
+        for (auto it = grid->cbeginValueOn(); it; ++it) largest = std::max(largest, *it);
+        if (!(largest > 0.0f)) return view;
+        const float cut = kVisibleFraction * largest;
+        openvdb::CoordBBox box;
+        openvdb::Vec3d weighted(0.0);
+        double mass = 0.0;
+        for (auto it = grid->cbeginValueOn(); it; ++it) {
+            if (!(*it >= cut)) continue;
+            const openvdb::CoordBBox cells = it.getBoundingBox();
+            box.expand(cells);
+            const double m = double(*it) * double(cells.volume());
+            weighted += m * grid->indexToWorld(cells.getCenter());
+            mass += m;
+        }
+        view.visible = worldBox(grid->transform(), box);
+        const openvdb::Vec3d c = weighted / mass;
+        view.centroid = glm::vec3(float(c.x()), float(c.y()), float(c.z()));
+        return view;
+    }
+    throw Error(path, "no density grid (looked for the names density, smoke, soot, density.*)");
+}
+
+}  // namespace eikon
