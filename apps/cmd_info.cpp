@@ -32,14 +32,13 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
             // stream error from the VDB reader.
             switch (sniffFileKind(*path)) {
                 case FileKind::Vdb:
+                case FileKind::NanoVdb:
                     std::fputs(formatVdbInfo(inspectVdb(*path)).c_str(), stdout);
                     break;
                 case FileKind::Json:
                     throw Error(*path,
                                 "a scene file (JSON), not a VDB file or a mesh; render it "
                                 "with eikon render");
-                case FileKind::NanoVdb:
-                    throw Error(*path, "a NanoVDB file, which eikon does not read yet");
             }
         }
         exitCode = 0;

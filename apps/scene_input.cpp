@@ -69,6 +69,7 @@ SceneInput readSceneInput(const std::string& input, const InputChoices& choices)
                 in.oneFrame = in.scene.time.frameStart == in.scene.time.frameEnd;
                 break;
             case FileKind::Vdb:
+            case FileKind::NanoVdb:  // read by the same importer (core/nanovdb_reader.h)
                 if (choices.framesGiven) {
                     in.scene = sequenceOfFile(input, choices.hold, camera, in.notes);
                 } else {
@@ -77,10 +78,6 @@ SceneInput readSceneInput(const std::string& input, const InputChoices& choices)
                     in.oneFrame = true;
                 }
                 break;
-            case FileKind::NanoVdb:
-                throw Error(input,
-                            "a NanoVDB file, which eikon does not read yet; export OpenVDB (.vdb) "
-                            "from the tool that wrote it");
         }
     }
     if (!note.empty()) in.notes.push_back(note);

@@ -4,6 +4,8 @@
 #include <cctype>
 
 #include "core/error.h"
+#include "core/file_kind.h"
+#include "core/nanovdb_reader.h"
 #include "core/vdb_import.h"
 #include "core/vdb_reader.h"
 
@@ -73,41 +75,67 @@ std::optional<glm::vec3> parseUpAxis(const std::string& text) {
     return std::nullopt;
 }
 
+namespace {
+
+// The voxel size, visible box and centroid of a float density grid.
+void viewGrid(const openvdb::FloatGrid& grid, DensityView& view) {
+    const openvdb::Vec3d vs = grid.voxelSize();
+    view.voxelSize = float(std::min({vs.x(), vs.y(), vs.z()}));
+    float largest = 0.0f;
+    for (auto it = grid.cbeginValueOn(); it; ++it) largest = std::max(largest, *it);
+    if (!(largest > 0.0f)) return;
+    const float cut = kVisibleFraction * largest;
+    openvdb::CoordBBox box;
+    openvdb::Vec3d weighted(0.0);
+    double mass = 0.0;
+    for (auto it = grid.cbeginValueOn(); it; ++it) {
+        if (!(*it >= cut)) continue;
+        const openvdb::CoordBBox cells = it.getBoundingBox();
+        box.expand(cells);
+        const double m = double(*it) * double(cells.volume());
+        weighted += m * grid.indexToWorld(cells.getCenter());
+        mass += m;
+    }
+    view.visible = worldBox(grid.transform(), box);
+    const openvdb::Vec3d c = weighted / mass;
+    view.centroid = glm::vec3(float(c.x()), float(c.y()), float(c.z()));
+}
+
+openvdb::FloatGrid::Ptr asDensity(const openvdb::GridBase::Ptr& base, const std::string& path,
+                                  const std::string& name) {
+    const auto grid = openvdb::GridBase::grid<openvdb::FloatGrid>(base);
+    if (!grid)
+        throw Error(path,
+                    "density grid '" + name + "' is " + base->valueType() + ", expected float");
+    return grid;
+}
+
+[[noreturn]] void noDensity(const std::string& path) {
+    throw Error(path, "no density grid (looked for the names density, smoke, soot, density.*)");
+}
+
+}  // namespace
+
 DensityView viewDensity(const std::string& path) {
     ensureOpenVdbInitialized();
-    VdbReader reader(path);
     DensityView view;
+    if (isNanoVdbFile(path)) {  // no file metadata, no writer's name: up is not implied
+        for (const NanoVdbGrid& g : readNanoVdb(path))
+            if (g.grid && canonicalFieldFor(g.name) == "density") {
+                viewGrid(*asDensity(g.grid, path, g.name), view);
+                return view;
+            }
+        noDensity(path);
+    }
+    VdbReader reader(path);
     upFromWriter(reader, view);
     for (size_t i = 0; i < reader.entries().size(); ++i) {
-        if (canonicalFieldFor(reader.entries()[i].name) != "density") continue;
-        const openvdb::GridBase::Ptr base = reader.readGrid(i);
-        const auto grid = openvdb::GridBase::grid<openvdb::FloatGrid>(base);
-        if (!grid)
-            throw Error(path, "density grid '" + reader.entries()[i].name + "' is " +
-                                  base->valueType() + ", expected float");
-        const openvdb::Vec3d vs = grid->voxelSize();
-        view.voxelSize = float(std::min({vs.x(), vs.y(), vs.z()}));
-        float largest = 0.0f;
-        for (auto it = grid->cbeginValueOn(); it; ++it) largest = std::max(largest, *it);
-        if (!(largest > 0.0f)) return view;
-        const float cut = kVisibleFraction * largest;
-        openvdb::CoordBBox box;
-        openvdb::Vec3d weighted(0.0);
-        double mass = 0.0;
-        for (auto it = grid->cbeginValueOn(); it; ++it) {
-            if (!(*it >= cut)) continue;
-            const openvdb::CoordBBox cells = it.getBoundingBox();
-            box.expand(cells);
-            const double m = double(*it) * double(cells.volume());
-            weighted += m * grid->indexToWorld(cells.getCenter());
-            mass += m;
-        }
-        view.visible = worldBox(grid->transform(), box);
-        const openvdb::Vec3d c = weighted / mass;
-        view.centroid = glm::vec3(float(c.x()), float(c.y()), float(c.z()));
+        const std::string& name = reader.entries()[i].name;
+        if (canonicalFieldFor(name) != "density") continue;
+        viewGrid(*asDensity(reader.readGrid(i), path, name), view);
         return view;
     }
-    throw Error(path, "no density grid (looked for the names density, smoke, soot, density.*)");
+    noDensity(path);
 }
 
 }  // namespace eikon

@@ -62,4 +62,11 @@ FileKind sniffFileKind(const std::string& path) {
                           shownBytes(head.substr(i)) + "\"");
 }
 
+bool isNanoVdbFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char head[7] = {};
+    in.read(head, sizeof(head));
+    return in.gcount() == 7 && std::memcmp(head, "NanoVDB", 7) == 0;
+}
+
 }  // namespace eikon

@@ -15,4 +15,8 @@ enum class FileKind {
 // of the kinds (the reason shows its first bytes, so a PNG or a zip is recognisable).
 FileKind sniffFileKind(const std::string& path);
 
+// True when `path` starts with NanoVDB's magic; false for anything else, including a file that
+// cannot be read (the reader that follows says why).
+bool isNanoVdbFile(const std::string& path);
+
 }  // namespace eikon

@@ -6,7 +6,9 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/file_kind.h"
 #include "core/log.h"
+#include "core/nanovdb_reader.h"
 #include "core/printable.h"
 #include "core/vdb_reader.h"
 
@@ -130,6 +132,53 @@ void validate(const std::string& path, const std::string& gridName, const std::s
     }
 }
 
+// Every grid of the file that can be a field, as one (float, vec3s); the others are named in
+// report.skipped without being decoded. NanoVDB files (core/nanovdb_reader.h) as OpenVDB's.
+std::vector<openvdb::GridBase::Ptr> readFieldGrids(const std::string& path,
+                                                   VdbImportReport& report) {
+    std::vector<openvdb::GridBase::Ptr> grids;
+    if (isNanoVdbFile(path)) {
+        for (const NanoVdbGrid& g : readNanoVdb(path)) {
+            if (!g.grid) {
+                report.skipped.push_back(printable(g.name) + ": " + g.skipped);
+                continue;
+            }
+            openvdb::GridBase::Ptr asField = asFieldGrid(g.grid);
+            asField->setName(g.name);
+            grids.push_back(asField);
+        }
+        return grids;
+    }
+    VdbReader reader(path);
+    report.creator = reader.creator();
+    for (size_t i = 0; i < reader.entries().size(); ++i) {
+        const VdbReader::Entry& e = reader.entries()[i];
+        const std::string name = printable(e.name);
+        if (!e.registered) {
+            report.skipped.push_back(name + ": grid type " + printable(e.type) +
+                                     " is not registered here");
+            continue;
+        }
+        const std::string valueType = openvdb::GridBase::createGrid(e.type)->valueType();
+        if (!isFieldValueType(valueType)) {
+            report.skipped.push_back(name + ": " + valueType +
+                                     " grid, not a field type (float, double, vec3s, vec3d)");
+            continue;
+        }
+        openvdb::GridBase::Ptr grid;
+        try {
+            grid = reader.readGrid(i);
+        } catch (const UnsupportedGridError& err) {
+            report.skipped.push_back(name + ": " + err.reason());
+            continue;
+        }
+        openvdb::GridBase::Ptr asField = asFieldGrid(grid);
+        asField->setName(e.name);
+        grids.push_back(asField);
+    }
+    return grids;
+}
+
 }  // namespace
 
 void ensureOpenVdbInitialized() {
@@ -174,36 +223,7 @@ VdbImportReport importVdb(const std::string& path, FieldRegistry& registry,
     ensureOpenVdbInitialized();
     VdbImportReport report;
     report.file = path;
-    VdbReader reader(path);
-    report.creator = reader.creator();
-
-    // Read every grid that can be a field; skip the others by name without decoding them.
-    std::vector<openvdb::GridBase::Ptr> grids;
-    for (size_t i = 0; i < reader.entries().size(); ++i) {
-        const VdbReader::Entry& e = reader.entries()[i];
-        const std::string name = printable(e.name);
-        if (!e.registered) {
-            report.skipped.push_back(name + ": grid type " + printable(e.type) +
-                                     " is not registered here");
-            continue;
-        }
-        const std::string valueType = openvdb::GridBase::createGrid(e.type)->valueType();
-        if (!isFieldValueType(valueType)) {
-            report.skipped.push_back(name + ": " + valueType +
-                                     " grid, not a field type (float, double, vec3s, vec3d)");
-            continue;
-        }
-        openvdb::GridBase::Ptr grid;
-        try {
-            grid = reader.readGrid(i);
-        } catch (const UnsupportedGridError& err) {
-            report.skipped.push_back(name + ": " + err.reason());
-            continue;
-        }
-        openvdb::GridBase::Ptr asField = asFieldGrid(grid);
-        asField->setName(e.name);
-        grids.push_back(asField);
-    }
+    std::vector<openvdb::GridBase::Ptr> grids = readFieldGrids(path, report);
 
     // Map names: each canonical field takes the matching grid of lowest alias rank; the other
     // grids keep their own names.

@@ -8,6 +8,8 @@
 
 #include "core/error.h"
 #include "core/field_registry.h"
+#include "core/file_kind.h"
+#include "core/nanovdb_reader.h"
 #include "core/printable.h"
 #include "core/vdb_import.h"
 #include "core/vdb_reader.h"
@@ -91,6 +93,24 @@ VdbFileInfo inspectVdb(const std::string& path) {
     ensureOpenVdbInitialized();
     VdbFileInfo out;
     out.path = path;
+    if (isNanoVdbFile(path)) {
+        out.fileVersion = "NanoVDB";
+        for (const NanoVdbGrid& g : readNanoVdb(path)) {
+            GridInfo info;
+            info.name = g.name;
+            info.type = g.type;
+            if (!g.grid) {
+                info.readable = false;
+                info.problem = g.skipped;
+            } else {
+                info.gridClass = openvdb::GridBase::gridClassToString(g.grid->getGridClass());
+                fillGeometry(*g.grid, info);
+                fillValueRange(*g.grid, info);
+            }
+            out.grids.push_back(info);
+        }
+        return out;
+    }
     VdbReader reader(path);
     out.fileVersion = reader.fileVersion();
     out.creator = reader.creator();
@@ -117,7 +137,8 @@ VdbFileInfo inspectVdb(const std::string& path) {
 
 std::string formatVdbInfo(const VdbFileInfo& info) {
     std::ostringstream s;
-    s << info.path << ": VDB " << info.fileVersion;
+    // NanoVDB files name themselves; OpenVDB's print their format version.
+    s << info.path << ": " << (info.fileVersion == "NanoVDB" ? "" : "VDB ") << info.fileVersion;
     // Names, types and the creator are the file's bytes: a terminal escape in one must not
     // reach the terminal raw (core/printable.h).
     if (!info.creator.empty()) s << ", written by " << printable(info.creator, 200);

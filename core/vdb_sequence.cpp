@@ -14,11 +14,19 @@ namespace fs = std::filesystem;
 namespace eikon {
 namespace {
 
-// Splits "fluid_data_0007.vdb" into prefix "fluid_data_" and number "0007"; the number is the
-// run of digits right before ".vdb". A "####" run is accepted in its place.
-bool splitFrameName(const std::string& name, std::string& prefix, std::string& number) {
-    const std::string ext = ".vdb";
-    if (name.size() <= ext.size() || name.compare(name.size() - ext.size(), ext.size(), ext) != 0)
+// Splits "fluid_data_0007.vdb" into prefix "fluid_data_", number "0007" and extension ".vdb"
+// (or ".nvdb", NanoVDB's); the number is the run of digits right before the extension. A "####"
+// run is accepted in its place.
+bool splitFrameName(const std::string& name, std::string& prefix, std::string& number,
+                    std::string& ext) {
+    auto endsWith = [&](const std::string& e) {
+        return name.size() > e.size() && name.compare(name.size() - e.size(), e.size(), e) == 0;
+    };
+    if (endsWith(".nvdb"))
+        ext = ".nvdb";
+    else if (endsWith(".vdb"))
+        ext = ".vdb";
+    else
         return false;
     const std::string stem = name.substr(0, name.size() - ext.size());
     size_t start = stem.size();
@@ -58,7 +66,7 @@ std::string VdbSequence::framesText() const {
 }
 
 std::string VdbSequence::pattern() const {
-    return (fs::path(directory) / (prefix + std::string(std::max(digits, 1), '#') + ".vdb"))
+    return (fs::path(directory) / (prefix + std::string(std::max(digits, 1), '#') + extension))
         .string();
 }
 
@@ -97,20 +105,20 @@ VdbSequence findVdbSequence(const std::string& fileOrPattern) {
     VdbSequence seq;
     seq.directory = given.parent_path().empty() ? "." : given.parent_path().string();
     std::string number;
-    if (!splitFrameName(given.filename().string(), seq.prefix, number))
+    if (!splitFrameName(given.filename().string(), seq.prefix, number, seq.extension))
         throw Error(fileOrPattern,
                     "not a frame of a sequence: expected name_####.vdb, name.####.vdb or "
-                    "name####.vdb (the frame number right before .vdb; ####, %04d or $F4 "
-                    "for it in a pattern)");
+                    "name####.vdb, or .nvdb (the frame number right before the extension; "
+                    "####, %04d or $F4 for it in a pattern)");
     std::error_code ec;
     if (!fs::is_directory(seq.directory, ec))
         throw Error(fileOrPattern, "folder '" + seq.directory + "' does not exist");
 
     for (const auto& entry : fs::directory_iterator(seq.directory, ec)) {
-        std::string prefix, digits;
+        std::string prefix, digits, ext;
         if (!entry.is_regular_file() ||
-            !splitFrameName(entry.path().filename().string(), prefix, digits) ||
-            prefix != seq.prefix || digits.front() == '#')
+            !splitFrameName(entry.path().filename().string(), prefix, digits, ext) ||
+            prefix != seq.prefix || ext != seq.extension || digits.front() == '#')
             continue;
         // A frame number that does not fit an int is not a frame of ours.
         if (digits.size() > 9) continue;

@@ -1,5 +1,6 @@
 #pragma once
-// Frame sequences of VDB files: name_####.vdb, name.####.vdb and name####.vdb, with the frames
+// Frame sequences of VDB files: name_####.vdb, name.####.vdb and name####.vdb (or .nvdb, NanoVDB
+// files, read by the same importer), with the frames
 // missing between the first and the last listed. Whether rendering a missing frame, or one
 // before the first or after the last, is an error (the default) or shows the nearest frame is
 // the scene's choice (core/scene_sources.cpp).
@@ -13,6 +14,7 @@ struct VdbSequence {
     std::string directory;
     std::string prefix;                 // "fluid_data_" (separator included)
     int digits = 0;                     // zero padding of the frame numbers seen
+    std::string extension = ".vdb";     // or ".nvdb": one sequence is of one kind
     std::map<int, std::string> frames;  // frame -> path
     std::vector<int> missing;           // frames between the first and last that are absent
 

@@ -57,7 +57,7 @@ TEST_CASE("printf's %04d and Houdini's $F4 find the same frames as ####", "[sequ
     CHECK(findVdbSequence(dir + "fluid_data_$F4.vdb").pattern() ==
           findVdbSequence(dir + "fluid_data_####.vdb").pattern());
     CHECK_THROWS_WITH(findVdbSequence(dir + "fluid_####_data.vdb"),
-                      Catch::Contains("the frame number right before .vdb"));
+                      Catch::Contains("the frame number right before the extension"));
     CHECK_THROWS_WITH(findVdbSequence(dir + "fluid##_####.vdb"),
                       Catch::Contains("two frame-number tokens"));
 }

@@ -1,14 +1,20 @@
 // `eikon render`'s inputs and outputs as users of vdb_render, Blender and Houdini expect (issue
 // 20): -o as a file, a pattern or a folder; single frames without a frame number; sequences from
 // a pattern (####, %04d, $F4) or from one numbered file with --frames; frames a cache lacks as an
-// error unless held; files told apart by content, not extension. Each bad input is one line and
-// writes nothing.
+// error unless held; files told apart by content, not extension; NanoVDB files. Each bad input is
+// one line and writes nothing.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
 #include <set>
 #include <string>
 
+#include <nanovdb/util/IO.h>
+#include <nanovdb/util/OpenToNanoVDB.h>
+#include <openvdb/tools/LevelSetSphere.h>
+#include <openvdb/tools/LevelSetUtil.h>
+
+#include "render/image.h"
 #include "support/run_eikon.h"
 #include "support/test_paths.h"
 
@@ -223,4 +229,29 @@ TEST_CASE("inputs are told apart by content, not by extension", "[cli][output][b
     r = render(quoted(dir + "/absent.vdb"), dir);
     checkOneLineError(r, dir + "/absent.vdb: ");
     CHECK(contains(r.err, "no such file"));
+}
+
+TEST_CASE("a NanoVDB file renders and eikon info lists its grid", "[cli][nanovdb]") {
+    const std::string dir = scratchDir("cli_nanovdb");
+    openvdb::initialize();
+    auto ball = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(0.4f, {0, 0, 0}, 0.05f);
+    openvdb::tools::sdfToFogVolume(*ball);
+    ball->setName("density");
+    const std::string file = dir + "/ball.nvdb";
+    nanovdb::io::writeGrid(file, nanovdb::openToNanoVDB(*ball));
+    RunResult r = render(quoted(file) + " -o " + quoted(dir + "/out/"), dir);
+    INFO(r.out << r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK(filesIn(dir + "/out") == std::set<std::string>{"ball.png"});
+    // The ball shows: the centre pixel is lit, the corner is not.
+    r = runEikon(
+        "render " + quoted(file) + " --size 16x12 --backend cpu -o " + quoted(dir + "/ball.exr"),
+        dir);
+    REQUIRE(r.exitCode == 0);
+    const eikon::Image image = eikon::readExr(dir + "/ball.exr");
+    CHECK(image.pixels[size_t(6 * 16 + 8)].r > 10.0f * image.pixels[0].r + 1e-3f);
+    r = runEikon("info " + quoted(file), dir);
+    REQUIRE(r.exitCode == 0);
+    CHECK(contains(r.out, file + ": NanoVDB, 1 grid"));
+    CHECK(contains(r.out, "  density  float, class fog volume"));
 }
