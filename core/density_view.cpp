@@ -8,24 +8,16 @@
 #include "core/nanovdb_reader.h"
 #include "core/vdb_import.h"
 #include "core/vdb_reader.h"
+#include "core/world_box.h"
 
 namespace eikon {
 namespace {
 
-// The world box around index box `box`'s outer voxel faces: all eight corners through the
-// transform, so a rotated grid's box holds it.
+// As a Bounds3 (floats), the box core/world_box.h gives.
 Bounds3 worldBox(const openvdb::math::Transform& xform, const openvdb::CoordBBox& box) {
-    const openvdb::Vec3d lo = box.min().asVec3d() - 0.5, hi = box.max().asVec3d() + 0.5;
-    Bounds3 out;
-    for (int corner = 0; corner < 8; ++corner) {
-        const openvdb::Vec3d p = xform.indexToWorld(openvdb::Vec3d(corner & 1 ? hi.x() : lo.x(),
-                                                                   corner & 2 ? hi.y() : lo.y(),
-                                                                   corner & 4 ? hi.z() : lo.z()));
-        const glm::vec3 q(float(p.x()), float(p.y()), float(p.z()));
-        out.min = corner == 0 ? q : glm::min(out.min, q);
-        out.max = corner == 0 ? q : glm::max(out.max, q);
-    }
-    return out;
+    const openvdb::BBoxd b = worldBoxOf(xform, box);
+    return {glm::vec3(float(b.min().x()), float(b.min().y()), float(b.min().z())),
+            glm::vec3(float(b.max().x()), float(b.max().y()), float(b.max().z()))};
 }
 
 // Up from the file: metadata a writer left ("up_axis", "upAxis", "up"), else what its writer is

@@ -13,6 +13,7 @@
 #include "core/printable.h"
 #include "core/vdb_import.h"
 #include "core/vdb_reader.h"
+#include "core/world_box.h"
 
 namespace eikon {
 namespace {
@@ -75,15 +76,10 @@ void fillGeometry(const openvdb::GridBase& grid, GridInfo& info) {
         info.indexMin[a] = box.min()[a];
         info.indexMax[a] = box.max()[a];
     }
-    const openvdb::Vec3d lo = box.min().asVec3d() - 0.5, hi = box.max().asVec3d() + 0.5;
-    for (int corner = 0; corner < 8; ++corner) {
-        const openvdb::Vec3d p = grid.transform().indexToWorld(
-            openvdb::Vec3d(corner & 1 ? hi.x() : lo.x(), corner & 2 ? hi.y() : lo.y(),
-                           corner & 4 ? hi.z() : lo.z()));
-        for (int a = 0; a < 3; ++a) {
-            info.worldMin[a] = corner == 0 ? p[a] : std::min(info.worldMin[a], p[a]);
-            info.worldMax[a] = corner == 0 ? p[a] : std::max(info.worldMax[a], p[a]);
-        }
+    const openvdb::BBoxd world = worldBoxOf(grid.transform(), box);
+    for (int a = 0; a < 3; ++a) {
+        info.worldMin[a] = world.min()[a];
+        info.worldMax[a] = world.max()[a];
     }
 }
 
