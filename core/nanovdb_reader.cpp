@@ -96,6 +96,12 @@ openvdb::GridBase::Ptr convertChecked(const nanovdb::GridHandle<nanovdb::HostBuf
         throw Error(path, "grid '" + name +
                               "' was written without a checksum, which eikon needs to trust a "
                               "NanoVDB file; write it with one (NanoVDB's default)");
+    // Blind data (point attributes, a name over 256 characters) is reached by offsets this reader
+    // does not bound; a field grid has none.
+    if (grid->blindDataCount() != 0)
+        throw Error(path, "grid '" + name +
+                              "' carries blind data (points, or a name over 256 characters), "
+                              "which eikon does not read");
     if (grid->gridSize() != handle.size() || !nodesInside(*grid, handle.size()))
         throw Error(path,
                     "grid '" + name + "' has node offsets outside its bytes: the file is corrupt");
