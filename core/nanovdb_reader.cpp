@@ -69,8 +69,7 @@ bool nodesInside(const nanovdb::NanoGrid<BuildT>& grid, uint64_t size) {
         }
     }
     // The node manager's runs: the counts the tree states, from the offsets it states.
-    const uint64_t nodeSize[3] = {sizeof(LeafT), sizeof(UpperT) == 0 ? 0 : sizeof(LowerT),
-                                  sizeof(UpperT)};
+    const uint64_t nodeSize[3] = {sizeof(LeafT), sizeof(LowerT), sizeof(UpperT)};
     for (int level = 0; level < 3; ++level) {
         if (tree.nodeCount(level) != counts[level]) return false;
         if (counts[level] == 0) continue;
