@@ -72,9 +72,18 @@ const Field& FieldRegistry::get(const std::string& name) const {
     if (it != fields_.end()) return it->second;
     std::string have;
     // Field names may be grid names from a file: escaped, like every quote of a user's bytes.
-    for (const auto& [n, f] : fields_) have += (have.empty() ? "" : ", ") + printable(n);
-    throw Error("fields", "no field '" + printable(name) +
-                              "' (fields present: " + (have.empty() ? "none" : have) + ")");
+    std::string solids;  // a level set is a solid's surface, not a field to map to optics
+    for (const auto& [n, f] : fields_) {
+        have += (have.empty() ? "" : ", ") + printable(n);
+        if (f.grid->getGridClass() == openvdb::GRID_LEVEL_SET)
+            solids += (solids.empty() ? "" : ", ") + printable(n);
+    }
+    if (!solids.empty())
+        solids = "; level sets (a solid's surface, not a field): " + solids +
+                 "; to render one as an object, give its file to \"meshes\" with the object's "
+                 "optics";
+    throw Error("fields", "no field '" + printable(name) + "' (fields present: " +
+                              (have.empty() ? "none" : have) + ")" + solids);
 }
 
 openvdb::FloatGrid::ConstPtr FieldRegistry::floatGrid(const std::string& name) const {

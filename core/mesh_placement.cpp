@@ -22,6 +22,7 @@ TriangleMesh meshShape(const MeshObjectSpec& spec) {
         }
         case MeshShapeType::File:
         case MeshShapeType::Liquid:
+        case MeshShapeType::LevelSet:
             break;
     }
     return {};

@@ -6,8 +6,9 @@
 
 namespace eikon {
 
-// The object-space mesh of a generated shape (icosphere, box); empty for a mesh read from a file
-// and for a liquid (made from its container by sim/container_fill.h).
+// The object-space mesh of a generated shape (icosphere, box); empty for a mesh read from a file,
+// for a level set (it has no triangles: core/level_set.h) and for a liquid (made from its
+// container by sim/container_fill.h).
 // Water: the box its waves stay in (the rest body with headroom for the droplets), which the
 // render volume is framed on; the surface itself comes from sim/water_surface.h each frame.
 TriangleMesh meshShape(const MeshObjectSpec& spec);

@@ -128,7 +128,18 @@ struct MaterialSpec {
 // mesh), so the optics never add up where two objects overlap.
 // A liquid fills an earlier mesh (its container, a glass or cup) to a fraction of its cavity's
 // depth (sim/container_fill.h), placed by the container's placement as that moves (placementOf).
-enum class MeshShapeType { File, Icosphere, Box, Water, Liquid };
+// A LevelSet is a solid read from a VDB or NanoVDB file's signed distance (core/level_set.h): its
+// coverage comes from the distance instead of from triangles; the blur, ∇n, placement and
+// overlap rule are the meshes'.
+enum class MeshShapeType { File, Icosphere, Box, Water, Liquid, LevelSet };
+
+// Which grid of a VDB file a level set comes from: by name, by its index in the file (an unnamed
+// grid has only that), or, with neither, the file's one grid of class "level set".
+struct GridChoice {
+    std::string name;
+    int index = -1;
+    bool given() const { return !name.empty() || index >= 0; }
+};
 
 // A pool of water whose surface follows the damped wave equation (sim/water_surface.h), stepped
 // on the scene's clock; droplets dent it at given times.
@@ -196,7 +207,9 @@ struct ArapSpec {
 struct MeshObjectSpec {
     std::string name;  // unique among meshes and materials
     MeshShapeType shape = MeshShapeType::File;
-    std::string file;         // File: OBJ, OFF, PLY or STL, resolved against the scene's folder
+    // File: OBJ, OFF, PLY or STL; LevelSet: VDB or NanoVDB. Resolved against the scene's folder.
+    std::string file;
+    GridChoice grid;          // LevelSet
     int closeHolesUpTo = 0;   // File: fill holes of up to this many edges (0: open meshes fail)
     float radius = 0.5f;      // Icosphere, around the object's origin
     int subdivisions = 4;     // Icosphere: 20·4^s triangles
@@ -371,19 +384,23 @@ Scene parseScene(const std::string& jsonText, const std::string& fileForMessages
 // The scene `eikon render cache.vdb` uses: the file as its only source, a grey smoke material on
 // its density, automatic bounds and resolution, one directional light from the upper right
 // front, black background, and an automatic camera framing the density that shows (at least
-// kVisibleFraction of its largest value, core/density_view.h), up along `camera.up` or the axis
+// kVisibleFraction of its largest value, core/density_view.h), up along `choices.up` or the axis
 // the file implies (the rule: core/default_scene.cpp chooseUp). `note` gets a line saying how the
 // up axis was chosen when the data chose it ("" otherwise).
-struct DefaultCamera {
+// A file with no density grid, or `choices.grid` given, is a solid: its level set
+// (core/level_set.h) as glass over a floor under a sun, whose caustic the photons draw on the
+// floor; `note` then says so.
+struct DefaultSceneChoices {
     std::optional<glm::vec3> up;  // --up
+    GridChoice grid;              // --grid: the level set to render
 };
-Scene defaultSceneForVdb(const std::string& vdbPath, const DefaultCamera& camera,
+Scene defaultSceneForVdb(const std::string& vdbPath, const DefaultSceneChoices& choices,
                          std::string& note);
 // The same look on a sequence (core/vdb_sequence.h: one frame's file or a pattern), its frames
 // the scene's frame_start to frame_end, images named as the cache (output.name
 // "fluid_data_####"), framed once on its first, middle and last frames. `holdMissingFrames` as
 // the scene key "missing_frames": "hold".
 Scene defaultSceneForVdbSequence(const std::string& fileOrPattern, bool holdMissingFrames,
-                                 const DefaultCamera& camera, std::string& note);
+                                 const DefaultSceneChoices& choices, std::string& note);
 
 }  // namespace eikon

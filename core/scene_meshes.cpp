@@ -3,10 +3,13 @@
 #include "core/scene_meshes.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "core/error.h"
+#include "core/file_kind.h"
 #include "core/scene_helpers.h"
 
 namespace eikon {
@@ -210,6 +213,29 @@ void readDeformer(const Value& value, MeshObjectSpec& mesh) {
     object.finish();
 }
 
+// A VDB or NanoVDB file is a level set: by content when the file is there (core/file_kind.h),
+// else by its extension, so that a missing file is reported by the reader that needs it.
+bool isVolumeFile(const std::string& path) {
+    try {
+        const FileKind kind = sniffFileKind(path);
+        return kind == FileKind::Vdb || kind == FileKind::NanoVdb;
+    } catch (const Error&) {
+        std::string ext = std::filesystem::path(path).extension().string();
+        for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return ext == ".vdb" || ext == ".nvdb";
+    }
+}
+
+// "grid": a name, or an index in the file.
+GridChoice readGridChoice(const Value& value) {
+    GridChoice choice;
+    if (value.isNumber())
+        choice.index = int(value.integer(0, 1000000));
+    else
+        choice.name = value.nonEmptyString();
+    return choice;
+}
+
 void readBlur(const Value& value, MeshObjectSpec& mesh) {
     Object object(value, "the index blur");
     if (auto s = object.optional("sigma_voxels"))
@@ -235,8 +261,18 @@ MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDi
     if (file) {
         mesh.shape = MeshShapeType::File;
         mesh.file = scene_detail::resolveAgainst(sceneDirectory, file->nonEmptyString());
-        if (auto holes = object.optional("close_holes"))
-            mesh.closeHolesUpTo = int(holes->integer(0, 1000000));
+        if (isVolumeFile(mesh.file)) {
+            mesh.shape = MeshShapeType::LevelSet;
+            if (auto grid = object.optional("grid")) mesh.grid = readGridChoice(*grid);
+            if (auto holes = object.optional("close_holes"))
+                holes->fail("\"close_holes\" applies to triangle meshes; a level set is closed");
+        } else {
+            if (auto holes = object.optional("close_holes"))
+                mesh.closeHolesUpTo = int(holes->integer(0, 1000000));
+            if (auto grid = object.optional("grid"))
+                grid->fail("\"grid\" picks a level set's grid in a VDB file; " + mesh.file +
+                           " is not one");
+        }
     } else {
         readShape(*shape, mesh, containerName);
         if (auto holes = object.optional("close_holes"))
@@ -260,6 +296,10 @@ MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDi
             deformer->fail("a water shape moves by its own equation; it takes no deformer");
         if (mesh.shape == MeshShapeType::Liquid)
             deformer->fail("a liquid follows its container's shape; it takes no deformer");
+        if (mesh.shape == MeshShapeType::LevelSet)
+            deformer->fail(
+                "a level set takes no deformer (deformers move triangles); convert it to a "
+                "mesh first");
         readDeformer(*deformer, mesh);
     }
 
@@ -283,9 +323,13 @@ void resolveContainer(const Value& at, const std::string& name,
     if (it == earlier.end())
         at.fail("no earlier mesh is named \"" + name +
                 "\" (a liquid's container must come before it in \"meshes\")");
-    if (it->shape == MeshShapeType::Water || it->shape == MeshShapeType::Liquid)
+    if (it->shape == MeshShapeType::Water || it->shape == MeshShapeType::Liquid ||
+        it->shape == MeshShapeType::LevelSet)
         at.fail("mesh \"" + name + "\" is " +
-                (it->shape == MeshShapeType::Water ? "water" : "a liquid") + ", not a container");
+                (it->shape == MeshShapeType::Water    ? "water"
+                 : it->shape == MeshShapeType::Liquid ? "a liquid"
+                                                      : "a level set") +
+                ", not a container (a container is a triangle mesh whose cavity is filled)");
     if (it->jelly || it->arap)
         at.fail("mesh \"" + name +
                 "\" has a deformer: a liquid in a deforming container is "

@@ -20,11 +20,35 @@ std::vector<unsigned char> placementKey(std::uint64_t version, const MeshObjectS
     return key;
 }
 
+// The placed box of a level set: its eight corners through the placement.
+Bounds3 placedBox(const Bounds3& local, const MeshObjectSpec& placement) {
+    Bounds3 out;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p = placePoint({corner & 1 ? local.max.x : local.min.x,
+                                        corner & 2 ? local.max.y : local.min.y,
+                                        corner & 4 ? local.max.z : local.min.z},
+                                       placement);
+        out = corner == 0 ? Bounds3{p, p} : Bounds3{glm::min(out.min, p), glm::max(out.max, p)};
+    }
+    return out;
+}
+
 }  // namespace
 
 MeshFields::MeshFields(const Scene& scene) : meshes_(scene.meshes.size()) {
     for (size_t i = 0; i < scene.meshes.size(); ++i) {
         const MeshShapeType shape = scene.meshes[i].shape;
+        if (shape == MeshShapeType::LevelSet) {
+            const MeshObjectSpec& spec = scene.meshes[i];
+            try {
+                meshes_[i].levelSet = LevelSet::read(spec.file, spec.grid);
+            } catch (const Error& e) {
+                throw Error(scene.path + ":" + spec.jsonPath + "/file",
+                            "mesh '" + spec.name + "': " + e.what());
+            }
+            meshes_[i].loaded = true;
+            continue;
+        }
         if (shape == MeshShapeType::File || shape == MeshShapeType::Water ||
             shape == MeshShapeType::Liquid)
             continue;
@@ -85,9 +109,12 @@ std::vector<Bounds3> MeshFields::worldBounds(const Scene& scene) {
     for (size_t i = 0; i < meshes_.size(); ++i) {
         const MeshObjectSpec& spec = scene.meshes[i];
         // Water moves every frame; the volume is framed on the room its waves stay in.
-        out.push_back(spec.shape == MeshShapeType::Water
-                          ? boundsOf(placeMesh(meshShape(spec), spec))
-                          : boundsOf(placed(scene, i)));
+        if (meshes_[i].levelSet)
+            out.push_back(placedBox(meshes_[i].levelSet->bounds(), placementOf(scene, i)));
+        else
+            out.push_back(spec.shape == MeshShapeType::Water
+                              ? boundsOf(placeMesh(meshShape(spec), spec))
+                              : boundsOf(placed(scene, i)));
     }
     return out;
 }
@@ -96,18 +123,23 @@ void MeshFields::update(const Scene& scene, const RenderVolume& volume, MeshVoxe
                         std::map<std::string, DenseGrid>& dense) {
     std::vector<unsigned char> composeKey;  // every coverage's inputs and every blur setting
     for (size_t i = 0; i < meshes_.size(); ++i) {
-        const TriangleMesh& world = placed(scene, i);
         Mesh& m = meshes_[i];
-        std::vector<unsigned char> key = m.placedKey;
+        const MeshObjectSpec& spec = scene.meshes[i];
+        const TriangleMesh* world = m.levelSet ? nullptr : &placed(scene, i);
+        std::vector<unsigned char> key =
+            m.levelSet ? placementKey(0, placementOf(scene, i)) : m.placedKey;
         appendBytes(key, &volume.bounds, sizeof(volume.bounds));
         appendBytes(key, &volume.resolution, sizeof(volume.resolution));
-        if (key != m.coverageKey) {
-            const MeshObjectSpec& spec = scene.meshes[i];
-            checkMeshFitsVoxelGrid(world,
+        if (key != m.coverageKey && m.levelSet) {
+            m.coverage = m.levelSet->coverage(volume, placementOf(scene, i));
+            m.coverageKey = key;
+            ++voxelizations_;
+        } else if (key != m.coverageKey) {
+            checkMeshFitsVoxelGrid(*world,
                                    scene.path + ":" + spec.jsonPath + " (mesh '" + spec.name + "')",
                                    volume.bounds.min, volume.voxelSize(), volume.resolution);
             m.coverage =
-                gpu ? gpu->voxelizeToHost(world, volume) : voxelizeCoverageCpu(world, volume);
+                gpu ? gpu->voxelizeToHost(*world, volume) : voxelizeCoverageCpu(*world, volume);
             m.coverageKey = key;
             ++voxelizations_;
         }

@@ -10,10 +10,12 @@
 // grids. Keeping the fields on the GPU end to end is left to do.
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/dense_grid.h"
+#include "core/level_set.h"
 #include "core/scene.h"
 #include "core/triangle_mesh.h"
 
@@ -23,7 +25,8 @@ class MeshVoxelizerGpu;
 
 class MeshFields {
 public:
-    // Generates the shapes' meshes; meshes from files wait for setMesh.
+    // Generates the shapes' meshes and reads the level sets (core/level_set.h; errors name the
+    // mesh's "file"); meshes from files wait for setMesh.
     explicit MeshFields(const Scene& scene);
 
     // The object-space triangles of mesh `index` (a file's, or a deformer's output each frame).
@@ -50,6 +53,7 @@ private:
         TriangleMesh placed;
         std::vector<unsigned char> coverageKey;
         std::vector<float> coverage;  // before the overlap rule
+        std::optional<LevelSet> levelSet;  // a LevelSet shape: its coverage from the distance
     };
     const TriangleMesh& placed(const Scene& scene, size_t index);
 

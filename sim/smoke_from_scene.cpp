@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/level_set.h"
 #include "core/mesh_placement.h"
 #include "core/mesh_voxelize.h"
 #include "sim/animation.h"
@@ -114,6 +115,11 @@ void addObstacles(SmokeSolver& solver, const SmokeSimulationSpec& spec,
                         "solver from the scene (smokeSolverFrom(scene))");
         // Solid cells: those whose centres the closed mesh holds (parity at the cell centres).
         const MeshObjectSpec& mesh = (*meshes)[std::size_t(obstacle.mesh)];
+        if (mesh.shape == MeshShapeType::LevelSet) {  // cells whose centres lie below zero
+            solver.addObstacle(LevelSet::read(mesh.file, mesh.grid)
+                                   .inside(d.origin, glm::vec3(d.voxelSize), d.resolution, mesh));
+            continue;
+        }
         const TriangleMesh world = worldMesh(mesh);
         checkMeshFitsVoxelGrid(world,
                                scenePath + ":" + obstacle.jsonPath + " (mesh '" + mesh.name + "')",

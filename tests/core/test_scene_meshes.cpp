@@ -296,3 +296,40 @@ TEST_CASE("a smoke obstacle names a mesh that stands still, or the error says wh
                       Catch::Contains("n.json:/simulation/obstacles/0/mesh") &&
                           Catch::Contains("the scene has none"));
 }
+
+TEST_CASE("a VDB file among the meshes is a level set, its grid chosen by name or index",
+          "[scene][meshes][level_set]") {
+    const Scene scene = parseMeshes(R"([
+        {"name": "ball", "file": "ball.vdb", "ior": 1.5, "translate": [0, 1, 0]},
+        {"name": "named", "file": "shapes.VDB", "grid": "surface", "absorption": [1, 1, 1]},
+        {"name": "nano", "file": "shapes.nvdb", "grid": 2, "ior": 1.33}])");
+    REQUIRE(scene.meshes.size() == 3);
+    CHECK(scene.meshes[0].shape == MeshShapeType::LevelSet);
+    CHECK_FALSE(scene.meshes[0].grid.given());
+    CHECK(scene.meshes[1].shape == MeshShapeType::LevelSet);
+    CHECK(scene.meshes[1].grid.name == "surface");
+    CHECK(scene.meshes[2].grid.index == 2);
+    CHECK(meshShape(scene.meshes[0]).triangles.empty());
+    // The same optics as a triangle mesh's: the index over the blurred coverage.
+    CHECK(scene.materials[0].field == "mesh:ball:n");
+    CHECK(scene.materials[0].ior == 1.5f);
+
+    auto fails = [](const std::string& meshes, const std::string& where, const std::string& what) {
+        INFO(meshes);
+        CHECK_THROWS_WITH(parseMeshes(meshes),
+                          Catch::Contains("m.json:" + where) && Catch::Contains(what));
+    };
+    fails(R"([{"name": "x", "file": "a.obj", "grid": 0, "ior": 1.5}])", "/meshes/0/grid",
+          "picks a level set's grid in a VDB file; a.obj is not one");
+    fails(R"([{"name": "x", "file": "a.vdb", "grid": -1, "ior": 1.5}])", "/meshes/0/grid", "0");
+    fails(R"([{"name": "x", "file": "a.vdb", "grid": "", "ior": 1.5}])", "/meshes/0/grid",
+          "non-empty");
+    fails(R"([{"name": "x", "file": "a.vdb", "close_holes": 2, "ior": 1.5}])",
+          "/meshes/0/close_holes", "a level set is closed");
+    fails(R"([{"name": "x", "file": "a.vdb", "ior": 1.5,
+               "deformer": {"type": "jelly"}}])",
+          "/meshes/0/deformer", "a level set takes no deformer");
+    fails(R"([{"name": "x", "file": "a.vdb", "ior": 1.5},
+              {"name": "w", "shape": {"type": "liquid", "container": "x", "fill": 0.5}, "ior": 1.33}])",
+          "/meshes/1/shape/container", "is a level set, not a container");
+}
