@@ -34,7 +34,17 @@ struct SimulateOptions {
     std::string scene;
     std::string outputDir;
     std::string frames;
+    bool quiet = false;
 };
+
+// Where a run is: "3/24, about 25 s left" from the frames stepped so far and their time (the
+// frames before --frames count, as they take as long to step).
+std::string progressText(int done, int total, double elapsedMs) {
+    char text[64];
+    const double leftSeconds = elapsedMs / done * (total - done) / 1000.0;
+    std::snprintf(text, sizeof text, "%d/%d, about %.0f s left", done, total, leftSeconds);
+    return text;
+}
 
 // One smoke domain being simulated: its solver, where its cache goes, and the mark that says a
 // run is writing it (core/cache_run_marker.h).
@@ -112,9 +122,9 @@ std::string keepCacheConsistent(const std::vector<Domain>& domains, int lastComp
     return note;
 }
 
-// Steps `domain` through `frame` and, when `write`, writes the frame's file; prints the frame's
-// line and returns its milliseconds.
-double stepFrame(Domain& domain, int frame, bool write) {
+// Steps `domain` through `frame` and, when `write`, writes the frame's file; returns the frame's
+// line (without its progress) and its milliseconds.
+std::string stepFrame(Domain& domain, int frame, bool write, double& ms) {
     const auto t0 = std::chrono::steady_clock::now();
     const sim::SmokeStepStats stats = domain.solver.advanceFrame();
     std::string path;
@@ -126,8 +136,7 @@ double stepFrame(Domain& domain, int frame, bool write) {
                           "simulation frame " + std::to_string(frame));
         exportVdb(path, registry, {field::kDensity, field::kTemperature, field::kVelocity});
     }
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     // With conserve_mass, the advection's density deficit the correction put back (relative, the
     // largest of the frame's substeps) and what the bounds left uncorrected.
     char mass[96] = "";
@@ -135,12 +144,12 @@ double stepFrame(Domain& domain, int frame, bool write) {
         std::snprintf(mass, sizeof mass, ", mass deficit %+.2e corrected (left %+.1e)",
                       stats.massDeficit, stats.massRemainder);
     const std::string& label = domain.spec.label;
-    std::printf("frame %d%s%s: %d substeps, %d CG iterations, CFL %.2f%s, %.1f ms%s%s\n", frame,
-                label.empty() ? "" : " ", label.c_str(), stats.substeps, stats.cgIterations,
-                stats.cfl, mass, ms, write ? " -> " : "",
-                write ? path.c_str() : " (before --frames, not written)");
-    std::fflush(stdout);
-    return ms;
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "frame %d%s%s: %d substeps, %d CG iterations, CFL %.2f%s, %.1f ms", frame,
+                  label.empty() ? "" : " ", label.c_str(), stats.substeps, stats.cgIterations,
+                  stats.cfl, mass, ms);
+    return std::string(line) + (write ? " -> " + path : " (before --frames, not written)");
 }
 
 int runSimulate(const SimulateOptions& o) {
@@ -178,10 +187,12 @@ int runSimulate(const SimulateOptions& o) {
         domains.push_back({spec, directory, sim::smokeSolverFrom(scene, d),
                            cacheRunMarkerPath(directory, spec.cacheName), std::nullopt});
         const glm::ivec3 n = spec.resolution;
-        std::printf("smoke%s%s %dx%dx%d, voxel %g, %g fps, frames %d-%d -> %s\n",
-                    spec.label.empty() ? "" : " ", spec.label.c_str(), n.x, n.y, n.z,
-                    double(spec.voxelSize), scene.time.fps, written.frameStart, written.frameEnd,
-                    framePath(directory, spec.cacheName, written.frameStart, "vdb").c_str());
+        if (!o.quiet)
+            std::printf("smoke%s%s %dx%dx%d, voxel %g, %g fps, frames %d-%d -> %s\n",
+                        spec.label.empty() ? "" : " ", spec.label.c_str(), n.x, n.y, n.z,
+                        double(spec.voxelSize), scene.time.fps, written.frameStart,
+                        written.frameEnd,
+                        framePath(directory, spec.cacheName, written.frameStart, "vdb").c_str());
     }
     double totalMs = 0.0;
     // Frame f holds the state after f − first + 1 frames of stepping. Every frame up to
@@ -195,9 +206,17 @@ int runSimulate(const SimulateOptions& o) {
         throw;
     }
     try {
+        const int total = written.frameEnd - first + 1;
         for (int frame = first; frame <= written.frameEnd; ++frame) {
-            for (Domain& domain : domains)
-                totalMs += stepFrame(domain, frame, frame >= written.frameStart);
+            for (Domain& domain : domains) {
+                double ms = 0.0;
+                const std::string line = stepFrame(domain, frame, frame >= written.frameStart, ms);
+                totalMs += ms;
+                if (o.quiet) continue;
+                std::printf("%s (%s)\n", line.c_str(),
+                            progressText(frame - first + 1, total, totalMs).c_str());
+                std::fflush(stdout);
+            }
             lastComplete = frame;
             if (frame >= written.frameStart) markCacheRuns(domains, written, frame);
         }
@@ -208,8 +227,9 @@ int runSimulate(const SimulateOptions& o) {
     }
     unmarkCacheRuns(domains, written);
     const int stepped = written.frameEnd - first + 1;
-    std::printf("simulated %d frames in %.1f ms (%.1f ms per frame)\n", stepped, totalMs,
-                totalMs / stepped);
+    if (!o.quiet)
+        std::printf("simulated %d frames in %.1f ms (%.1f ms per frame)\n", stepped, totalMs,
+                    totalMs / stepped);
     return 0;
 }
 
@@ -224,6 +244,9 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("-o,--output", o->outputDir,
                     "cache folder (default: the scene's simulation.cache)");
     cmd->add_option("--frames", o->frames, "frames to write FIRST-LAST, or one frame");
+    cmd->add_flag("--quiet", o->quiet,
+                  "print nothing but errors and warnings: no line per frame (which gives the "
+                  "frame's substeps, CG iterations, CFL, time, file, and the frames left)");
     cmd->footer(
         "Examples (from the repository root):\n  eikon simulate data/scenes/smoke_plume.json "
         "--frames 1-24\n  eikon render data/scenes/smoke_plume.json -o out/plume/\n");

@@ -99,6 +99,8 @@ TEST_CASE("eikon simulate writes one VDB per frame, and a rerun replaces them cl
     CHECK(first.out.find("frame 1: ") != std::string::npos);
     CHECK(first.out.find("CG iterations") != std::string::npos);
     CHECK(first.out.find("-> " + f2) != std::string::npos);
+    CHECK(first.out.find("(1/2, about ") != std::string::npos);  // how far, and what is left
+    CHECK(first.out.find("(2/2, about 0 s left)") != std::string::npos);
     checkFrameImports(f1);
     checkFrameImports(f2);
     CHECK(fileCount(out) == 2);  // no partial files
@@ -116,6 +118,15 @@ TEST_CASE("eikon simulate writes one VDB per frame, and a rerun replaces them cl
     CHECK(fileCount(out) == 2);
     CHECK(fileBytes(f1) == bytes1);
     CHECK(fileBytes(f2) == bytes2);
+
+    // --quiet: for scripts, nothing printed, the same files written.
+    const std::string hushed = dir + "/quiet";
+    const RunResult quiet =
+        runEikon("simulate " + quoted(scene) + " -o " + quoted(hushed) + " --quiet", dir);
+    REQUIRE(quiet.exitCode == 0);
+    CHECK(quiet.out.empty());
+    CHECK(quiet.err.empty());
+    CHECK(fileBytes(hushed + "/tiny_0002.vdb") == bytes2);
 
     // --frames writes only the frames asked for, stepping through the ones before.
     const std::string only = dir + "/only2";
