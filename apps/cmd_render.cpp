@@ -39,6 +39,7 @@ struct RenderOptions {
     bool hold = false;
     bool quiet = false;
     std::string up;
+    std::string grid;
     std::string size;
     bool stats = false;
     std::string backend = "auto";
@@ -124,6 +125,7 @@ int runRender(const RenderOptions& o) {
     choices.framesGiven = !o.frames.empty();
     choices.hold = o.hold;
     choices.up = o.up;
+    choices.grid = o.grid;
     SceneInput input = readSceneInput(o.input, choices);
     Scene& scene = input.scene;
     // Before --frames: a live simulation starts at the frame_start the scene gives, whichever
@@ -207,6 +209,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                     "a VDB input's up axis for the automatic camera: x, y or z (default: the "
                     "file's metadata or writer, else the sequence's motion, else y)")
         ->check(CLI::IsMember({"x", "y", "z"}));
+    cmd->add_option("--grid", o->grid,
+                    "a VDB input's level set to render as a solid (glass over a floor), by name "
+                    "or index (default: the density; without one, the file's level set)");
     cmd->add_flag("--stats", o->stats, "print time per stage (CPU and GPU)");
     cmd->add_flag("--quiet", o->quiet,
                   "print nothing but errors, warnings and --stats: no 'wrote' lines, no progress "

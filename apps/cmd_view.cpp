@@ -30,6 +30,7 @@ struct ViewOptions {
     std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
     bool hold = false;
     std::string up;
+    std::string grid;
 };
 
 ScriptedDrag parseDrag(const std::string& text) {
@@ -53,6 +54,7 @@ int runView(const ViewOptions& o) {
     choices.size = o.size;
     choices.hold = o.hold;
     choices.up = o.up;
+    choices.grid = o.grid;
     const SceneInput input = readSceneInput(o.input, choices);
     for (const std::string& note : input.notes) logInfo(note);
     Scene scene = input.scene;
@@ -92,6 +94,9 @@ void addViewCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--size", o->size, "window size WIDTHxHEIGHT");
     cmd->add_option("--up", o->up, "a VDB input's up axis for the automatic camera: x, y or z")
         ->check(CLI::IsMember({"x", "y", "z"}));
+    cmd->add_option("--grid", o->grid,
+                    "a VDB input's level set to show as a solid (glass over a floor), by name or "
+                    "index");
     cmd->add_flag("--hold", o->hold,
                   "where a VDB sequence lacks a frame, show its nearest frame instead of stopping");
     cmd->add_option("--backend", o->backend,

@@ -29,7 +29,7 @@ bool isPattern(const std::string& input) {
 
 // One VDB file given with --frames: the sequence it is a frame of, said in one line; a file
 // that is not numbered has no other frames to render.
-Scene sequenceOfFile(const std::string& input, bool hold, const DefaultCamera& camera,
+Scene sequenceOfFile(const std::string& input, bool hold, const DefaultSceneChoices& camera,
                      std::vector<std::string>& notes) {
     VdbSequence seq;
     try {
@@ -47,15 +47,32 @@ Scene sequenceOfFile(const std::string& input, bool hold, const DefaultCamera& c
     return scene;
 }
 
+// "surface" (a name) or "1" (an index, digits only); "" chooses nothing.
+GridChoice gridChoiceOf(const std::string& text) {
+    GridChoice choice;
+    if (text.empty()) return choice;
+    if (text.find_first_not_of("0123456789") == std::string::npos && text.size() <= 6)
+        choice.index = std::stoi(text);
+    else
+        choice.name = text;
+    return choice;
+}
+
 }  // namespace
 
 SceneInput readSceneInput(const std::string& input, const InputChoices& choices) {
     SceneInput in;
-    DefaultCamera camera;
+    DefaultSceneChoices camera;
     if (!choices.up.empty()) {
         camera.up = parseUpAxis(choices.up);
         if (!camera.up) throw Error("--up", "expected x, y or z, got '" + choices.up + "'");
     }
+    camera.grid = gridChoiceOf(choices.grid);
+    const bool sequence = isPattern(input) || choices.framesGiven;
+    if (camera.grid.given() && sequence)
+        throw Error("--grid", "picks a level set in one VDB file; " + input +
+                                  (choices.framesGiven ? " with --frames" : "") +
+                                  " is a sequence, and level sets are read one file at a time");
     std::string note;
     if (isPattern(input)) {
         in.scene = defaultSceneForVdbSequence(input, choices.hold, camera, note);
@@ -65,6 +82,9 @@ SceneInput readSceneInput(const std::string& input, const InputChoices& choices)
                 if (camera.up)
                     throw Error("--up", "applies to a VDB input's automatic camera; " + input +
                                             " is a scene, whose camera is its own");
+                if (camera.grid.given())
+                    throw Error("--grid", "picks a level set in a VDB input; " + input +
+                                              " is a scene (its meshes take \"grid\")");
                 in.scene = loadScene(input);
                 in.oneFrame = in.scene.time.frameStart == in.scene.time.frameEnd;
                 break;

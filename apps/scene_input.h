@@ -16,6 +16,7 @@ struct InputChoices {
     bool framesGiven = false;  // --frames: a numbered VDB file stands for its whole sequence
     bool hold = false;         // --hold: every sequence holds its nearest frame where it has none
     std::string up;            // --up x|y|z for a VDB input's automatic camera; "" lets it choose
+    std::string grid;          // --grid NAME|INDEX: a VDB input's level set to render as a solid
 };
 
 struct SceneInput {
@@ -29,7 +30,8 @@ struct SceneInput {
 };
 
 // Throws eikon::Error for a missing or unreadable input, an unknown kind of file, a bad scene,
-// and --frames on a VDB file that is not a frame of a sequence.
+// --frames on a VDB file that is not a frame of a sequence, and --up or --grid with a scene
+// (--grid also with a sequence: level-set sequences are not rendered without a scene).
 SceneInput readSceneInput(const std::string& input, const InputChoices& choices);
 
 }  // namespace eikon::app

@@ -6,6 +6,7 @@
 #include "core/camera.h"
 #include "core/density_view.h"
 #include "core/error.h"
+#include "core/level_set.h"
 #include "core/scene.h"
 #include "core/vdb_import.h"
 #include "core/vdb_reader.h"
@@ -13,6 +14,10 @@
 
 namespace eikon {
 namespace {
+
+const char* axisName(glm::vec3 up) {
+    return up.x > 0.5f ? "x" : up.z > 0.5f ? "z" : "y";
+}
 
 // The up axis of the automatic camera, by the rule docs/scene-format.md states: the user's
 // choice; else the writer's (core/density_view.h); else, for a sequence, the axis along which the
@@ -51,7 +56,7 @@ glm::vec3 chooseUp(const std::optional<glm::vec3>& given, const std::vector<Dens
 // the camera framing what shows in `framedFiles` (one file, or a sequence's first, middle and
 // last frames) as one box, the same every frame.
 Scene defaultSceneFor(const SourceSpec& src, const std::vector<std::string>& framedFiles,
-                      const DefaultCamera& camera, std::string& note) {
+                      const DefaultSceneChoices& camera, std::string& note) {
     std::vector<DensityView> views;
     for (const std::string& file : framedFiles) views.push_back(viewDensity(file));
     const float voxel = views.front().voxelSize;
@@ -64,9 +69,9 @@ Scene defaultSceneFor(const SourceSpec& src, const std::vector<std::string>& fra
     if (framed.valid()) scene.camera.framed = framed;
     std::string reason;
     scene.camera.up = chooseUp(camera.up, views, reason);
-    const char* axis = scene.camera.up.x > 0.5f ? "x" : scene.camera.up.z > 0.5f ? "z" : "y";
     if (!reason.empty())
-        note = std::string("camera up +") + axis + ": " + reason + " (--up x|y|z to choose)";
+        note = std::string("camera up +") + axisName(scene.camera.up) + ": " + reason +
+               " (--up x|y|z to choose)";
     MaterialSpec smoke;
     smoke.name = "smoke";
     smoke.field = "density";
@@ -88,20 +93,113 @@ Scene defaultSceneFor(const SourceSpec& src, const std::vector<std::string>& fra
     return scene;
 }
 
+// The look of a solid (core/level_set.h): glass (ior 1.5, a faint blue-green tint) standing over
+// a floor under a sun from above, the floor a quarter of the solid's height below it, where a
+// glass ball's caustic focuses (ball lens: f = nR/(2(n − 1)) = 1.5R from the centre), and room
+// around for the shadow. The volume is 64 voxels along its longest side; the photons draw the
+// caustic.
+Scene levelSetScene(const std::string& path, const DefaultSceneChoices& choices,
+                    std::string& note) {
+    const LevelSet set = LevelSet::read(path, choices.grid);
+    const Bounds3 box = set.bounds();
+    const DensityView writer = writerUpOf(path);
+    const glm::vec3 up = choices.up ? *choices.up : writer.up ? *writer.up : glm::vec3(0, 1, 0);
+    const int upAxis = up.x > 0.5f ? 0 : up.z > 0.5f ? 2 : 1;
+    const glm::vec3 size = box.size();
+    const float longest = std::max({size.x, size.y, size.z});
+
+    Scene scene;
+    scene.path = path;
+    MeshObjectSpec solid;
+    solid.name = "solid";
+    solid.shape = MeshShapeType::LevelSet;
+    solid.file = path;
+    solid.grid = choices.grid;
+    solid.jsonPath = "(file)";
+    scene.meshes.push_back(solid);
+    const MeshFieldNames fields = meshMaterialFieldNames(solid);
+    MaterialSpec tint;  // per scene unit: across the solid, about 10 % red, 3 % green lost
+    tint.name = "solid";
+    tint.field = fields.coverage;
+    tint.absorption = glm::vec3(0.1f, 0.03f, 0.05f) / longest;
+    scene.materials.push_back(tint);
+    MaterialSpec glass;
+    glass.name = "solid.n";
+    glass.field = fields.index;
+    glass.ior = 1.5f;
+    scene.materials.push_back(glass);
+
+    const float floor = box.min[upAxis] - 0.25f * size[upAxis];
+    Bounds3 volume{box.min - 0.35f * longest, box.max + 0.35f * longest};
+    volume.min[upAxis] = floor - 0.05f * longest;
+    volume.max[upAxis] = box.max[upAxis] + 0.15f * longest;  // the index blur's 4 voxels
+    scene.volume.autoBounds = false;
+    scene.volume.bounds = volume;
+    scene.volume.autoResolution = false;
+    const float voxel = std::max({volume.size().x, volume.size().y, volume.size().z}) / 64.0f;
+    scene.volume.resolution = glm::max(glm::ivec3(glm::ceil(volume.size() / voxel)), 8);
+
+    ReceiverSpec ground;
+    ground.axis = upAxis;
+    ground.position = floor;
+    ground.albedo = glm::vec3(0.75f);
+    scene.receivers.push_back(ground);
+
+    LightSpec sun;
+    sun.type = LightType::Directional;
+    const glm::vec3 front = frontOf(up), right = glm::cross(up, front);
+    sun.direction = -glm::normalize(up + 0.25f * right + 0.15f * front);
+    sun.intensity = 2.0f;
+    scene.lights.push_back(sun);
+
+    scene.camera.up = up;
+    scene.camera.framed = volume;
+    scene.environment.color = glm::vec3(0.02f, 0.02f, 0.03f);
+    scene.render.lightTransport = R"({"photons":{"per_side":256}})";
+    scene.output.name = "render";
+    note = path + ": " + set.label() +
+           " is a level set: rendered as glass (ior 1.5) over a floor, " + axisName(up) + " up" +
+           (choices.up || !writer.up ? "" : " (" + writer.upReason + ")") +
+           "; a scene gives it other optics under \"meshes\"";
+    return scene;
+}
+
 }  // namespace
 
-Scene defaultSceneForVdb(const std::string& vdbPath, const DefaultCamera& camera,
+Scene defaultSceneForVdb(const std::string& vdbPath, const DefaultSceneChoices& choices,
                          std::string& note) {
+    if (choices.grid.given()) return levelSetScene(vdbPath, choices, note);
+    if (!holdsDensityGrid(vdbPath)) {
+        try {
+            return levelSetScene(vdbPath, choices, note);
+        } catch (const Error& e) {
+            throw Error(vdbPath,
+                        "no density grid (names density, smoke, soot, density.*); " + e.reason());
+        }
+    }
     SourceSpec src;
     src.type = SourceType::Vdb;
     src.file = vdbPath;
     src.jsonPath = "(file)";
-    return defaultSceneFor(src, {vdbPath}, camera, note);
+    return defaultSceneFor(src, {vdbPath}, choices, note);
 }
 
 Scene defaultSceneForVdbSequence(const std::string& fileOrPattern, bool holdMissingFrames,
-                                 const DefaultCamera& camera, std::string& note) {
+                                 const DefaultSceneChoices& camera, std::string& note) {
     const VdbSequence seq = findVdbSequence(fileOrPattern);
+    const std::string& first = seq.frames.begin()->second;
+    if (!holdsDensityGrid(first)) {  // a level-set sequence: say so, not only "no density"
+        std::string label;
+        try {
+            label = LevelSet::read(first, {}).label();
+        } catch (const Error&) {  // neither: viewDensity below says what is missing
+        }
+        if (!label.empty())
+            throw Error(first, "no density grid; " + label +
+                                   " is a level set, and level sets are rendered one file at a "
+                                   "time (eikon render " +
+                                   first + ")");
+    }
     SourceSpec src;
     src.type = SourceType::VdbSequence;
     src.file = seq.pattern();
@@ -110,7 +208,7 @@ Scene defaultSceneForVdbSequence(const std::string& fileOrPattern, bool holdMiss
     // Framed once, on the first, middle and last frames: a plume that grows stays in view, and
     // the camera does not move as it grows (it reframed every frame, so the plume seemed to
     // shrink).
-    std::vector<std::string> framed{seq.frames.begin()->second};
+    std::vector<std::string> framed{first};
     const auto middle = seq.frames.lower_bound(seq.first() + (seq.last() - seq.first()) / 2);
     if (middle->second != framed.back()) framed.push_back(middle->second);
     if (seq.frames.rbegin()->second != framed.back()) framed.push_back(seq.frames.rbegin()->second);

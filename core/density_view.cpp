@@ -130,4 +130,24 @@ DensityView viewDensity(const std::string& path) {
     noDensity(path);
 }
 
+bool holdsDensityGrid(const std::string& path) {
+    ensureOpenVdbInitialized();
+    if (isNanoVdbFile(path)) {
+        for (const NanoVdbGrid& g : readNanoVdb(path))
+            if (canonicalFieldFor(g.name) == "density") return true;
+        return false;
+    }
+    const VdbReader reader(path);
+    for (const VdbReader::Entry& e : reader.entries())
+        if (canonicalFieldFor(e.name) == "density") return true;
+    return false;
+}
+
+DensityView writerUpOf(const std::string& path) {
+    ensureOpenVdbInitialized();
+    DensityView view;
+    if (!isNanoVdbFile(path)) upFromWriter(VdbReader(path), view);
+    return view;
+}
+
 }  // namespace eikon

@@ -27,6 +27,13 @@ struct DensityView {
 // density.*) or the grid is not float.
 DensityView viewDensity(const std::string& path);
 
+// Whether `path` has a grid the density aliases name (without reading any grid's voxels).
+bool holdsDensityGrid(const std::string& path);
+
+// The up axis the file's writer implies (DensityView::up and upReason), for files without
+// density: a level set's default scene stands it on a floor below it.
+DensityView writerUpOf(const std::string& path);
+
 // "x", "y" or "z" (also "+z"): the axis as a unit vector; nothing for anything else.
 std::optional<glm::vec3> parseUpAxis(const std::string& text);
 
