@@ -70,6 +70,10 @@ void FieldRegistry::set(const std::string& name, openvdb::GridBase::Ptr grid, st
 const Field& FieldRegistry::get(const std::string& name) const {
     auto it = fields_.find(name);
     if (it != fields_.end()) return it->second;
+    throw Error("fields", "no field '" + printable(name) + "' " + presentText());
+}
+
+std::string FieldRegistry::presentText() const {
     std::string have;
     // Field names may be grid names from a file: escaped, like every quote of a user's bytes.
     std::string solids;  // a level set is a solid's surface, not a field to map to optics
@@ -82,8 +86,7 @@ const Field& FieldRegistry::get(const std::string& name) const {
         solids = "; level sets (a solid's surface, not a field): " + solids +
                  "; to render one as an object, give its file to \"meshes\" with the object's "
                  "optics";
-    throw Error("fields", "no field '" + printable(name) + "' (fields present: " +
-                              (have.empty() ? "none" : have) + ")" + solids);
+    return "(fields present: " + (have.empty() ? std::string("none") : have) + ")" + solids;
 }
 
 openvdb::FloatGrid::ConstPtr FieldRegistry::floatGrid(const std::string& name) const {

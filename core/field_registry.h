@@ -58,6 +58,9 @@ public:
     const Field& get(const std::string& name) const;
     openvdb::FloatGrid::ConstPtr floatGrid(const std::string& name) const;
     std::vector<std::string> names() const;
+    // For a message about a field that is missing: "(fields present: a, b)", and where some are
+    // level sets (solids' surfaces, which optics do not read as fields), where they belong.
+    std::string presentText() const;
     void clear() { fields_.clear(); }
 
 private:

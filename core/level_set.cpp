@@ -47,8 +47,7 @@ std::string labelOf(const std::vector<Candidate>& all, size_t i) {
 std::string listOf(const std::vector<Candidate>& all) {
     std::string out;
     for (size_t i = 0; i < all.size(); ++i)
-        out +=
-            (i ? ", " : "") + labelOf(all, i) + ": " + all[i].gridClass + ", " + all[i].valueType;
+        out += (i ? "; " : "") + labelOf(all, i) + ": " + all[i].gridClass + " " + all[i].valueType;
     return out;
 }
 

@@ -21,13 +21,9 @@ namespace {
 const Field& materialField(const Scene& scene, const FieldRegistry& fields, size_t m) {
     const MaterialSpec& mat = scene.materials[m];
     const std::string where = scene.path + ":/materials/" + std::to_string(m) + "/field";
-    if (!fields.has(mat.field)) {
-        std::string have;
-        for (const auto& n : fields.names()) have += (have.empty() ? "" : ", ") + n;
+    if (!fields.has(mat.field))
         throw Error(where, "material '" + mat.name + "' reads field '" + mat.field +
-                               "', which no source provides (fields present: " +
-                               (have.empty() ? "none" : have) + ")");
-    }
+                               "', which no source provides " + fields.presentText());
     const Field& f = fields.get(mat.field);
     if (!f.isScalar())
         throw Error(where, "material '" + mat.name + "' reads field '" + mat.field + "', a " +

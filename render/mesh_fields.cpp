@@ -24,10 +24,10 @@ std::vector<unsigned char> placementKey(std::uint64_t version, const MeshObjectS
 Bounds3 placedBox(const Bounds3& local, const MeshObjectSpec& placement) {
     Bounds3 out;
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p = placePoint({corner & 1 ? local.max.x : local.min.x,
-                                        corner & 2 ? local.max.y : local.min.y,
-                                        corner & 4 ? local.max.z : local.min.z},
-                                       placement);
+        const glm::vec3 p = placePoint(
+            {corner & 1 ? local.max.x : local.min.x, corner & 2 ? local.max.y : local.min.y,
+             corner & 4 ? local.max.z : local.min.z},
+            placement);
         out = corner == 0 ? Bounds3{p, p} : Bounds3{glm::min(out.min, p), glm::max(out.max, p)};
     }
     return out;

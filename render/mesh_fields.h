@@ -52,7 +52,7 @@ private:
         std::vector<unsigned char> placedKey;
         TriangleMesh placed;
         std::vector<unsigned char> coverageKey;
-        std::vector<float> coverage;  // before the overlap rule
+        std::vector<float> coverage;       // before the overlap rule
         std::optional<LevelSet> levelSet;  // a LevelSet shape: its coverage from the distance
     };
     const TriangleMesh& placed(const Scene& scene, size_t index);

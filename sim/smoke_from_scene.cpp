@@ -1,6 +1,7 @@
 #include "sim/smoke_from_scene.h"
 
 #include <memory>
+#include <optional>
 
 #include "core/error.h"
 #include "core/level_set.h"
@@ -116,8 +117,14 @@ void addObstacles(SmokeSolver& solver, const SmokeSimulationSpec& spec,
         // Solid cells: those whose centres the closed mesh holds (parity at the cell centres).
         const MeshObjectSpec& mesh = (*meshes)[std::size_t(obstacle.mesh)];
         if (mesh.shape == MeshShapeType::LevelSet) {  // cells whose centres lie below zero
-            solver.addObstacle(LevelSet::read(mesh.file, mesh.grid)
-                                   .inside(d.origin, glm::vec3(d.voxelSize), d.resolution, mesh));
+            std::optional<LevelSet> set;
+            try {
+                set = LevelSet::read(mesh.file, mesh.grid);
+            } catch (const Error& e) {  // where the renderer says it (render/mesh_fields.cpp)
+                throw Error(scenePath + ":" + mesh.jsonPath + "/file",
+                            "mesh '" + mesh.name + "': " + e.what());
+            }
+            solver.addObstacle(set->inside(d.origin, glm::vec3(d.voxelSize), d.resolution, mesh));
             continue;
         }
         const TriangleMesh world = worldMesh(mesh);

@@ -79,7 +79,7 @@ TEST_CASE("the up axis: --up, the writer's, the sequence's motion, else y", "[ca
         CHECK(note.find("Houdini") != std::string::npos);
     }
     SECTION("the user's axis wins") {
-        DefaultCamera camera;
+        DefaultSceneChoices camera;
         camera.up = glm::vec3(1, 0, 0);
         const Scene s = defaultSceneForVdb(
             test::sharedData("vdb/blender_smoke_c42/fluid_data_0010.vdb"), camera, note);

@@ -177,8 +177,8 @@ TEST_CASE("the level set is chosen by class, name or index", "[level_set]") {
     CHECK_THROWS_WITH(
         LevelSet::read(dir + "/two.vdb", {}),
         Catch::Contains("two.vdb: holds 2 level sets") &&
-            Catch::Contains("'density' (grid 0): fog volume, float") &&
-            Catch::Contains("'b' (grid 2): level set, float") &&
+            Catch::Contains("'density' (grid 0): fog volume float") &&
+            Catch::Contains("'b' (grid 2): level set float") &&
             Catch::Contains("choose one by its name or index (\"grid\" in a scene's mesh"));
     CHECK(LevelSet::read(dir + "/two.vdb", {"b", -1}).label() == "'b' (grid 2)");
     CHECK(LevelSet::read(dir + "/two.vdb", {"", 1}).label() == "'a' (grid 1)");
@@ -195,7 +195,7 @@ TEST_CASE("the level set is chosen by class, name or index", "[level_set]") {
                           Catch::Contains("choose a signed-distance grid by its name or index"));
     // An unnamed SDF of no class: by index only, labelled.
     CHECK_THROWS_WITH(LevelSet::read(dir + "/unnamed.vdb", {}),
-                      Catch::Contains("unnamed grid 1: unknown, float"));
+                      Catch::Contains("unnamed grid 1: unknown float"));
     const LevelSet chosen = LevelSet::read(dir + "/unnamed.vdb", {"", 1});
     CHECK(chosen.label() == "unnamed grid 1");
     const RenderVolume v = cube(0.8f, 40);
