@@ -1,8 +1,11 @@
 #include "sim/smoke_publish.h"
 
+#include <cmath>
+
 #include <openvdb/openvdb.h>
 
 #include "core/field_registry.h"
+#include "core/vdb_export.h"
 #include "core/vdb_import.h"
 
 namespace eikon::sim {
@@ -16,6 +19,9 @@ openvdb::math::Transform::Ptr domainTransform(const Domain& d) {
     return xform;
 }
 
+// Values below kExportPruneTolerance stay background, as `eikon simulate` writes them
+// (core/vdb_export.h): a frame rendered live and the same frame rendered from the cache are then
+// the same fields, so the same bytes (a farm renders from the cache, a workstation live).
 openvdb::FloatGrid::Ptr scalarGrid(const Array3& a, const Domain& d, const std::string& name) {
     auto grid = openvdb::FloatGrid::create(0.0f);
     grid->setName(name);
@@ -26,7 +32,7 @@ openvdb::FloatGrid::Ptr scalarGrid(const Array3& a, const Domain& d, const std::
         for (int j = 0; j < n.y; ++j)
             for (int i = 0; i < n.x; ++i) {
                 const float v = a(i, j, k);
-                if (v != 0.0f) acc.setValue(openvdb::Coord(i, j, k), v);
+                if (std::abs(v) >= kExportPruneTolerance) acc.setValue(openvdb::Coord(i, j, k), v);
             }
     return grid;
 }

@@ -81,3 +81,38 @@ TEST_CASE("published smoke round-trips through core's VDB export and import", "[
     CHECK(differing == 0);
     CHECK(back.floatGrid("density")->transform() == reg.floatGrid("density")->transform());
 }
+
+TEST_CASE("a published frame holds exactly what its cache file holds, the faint values too",
+          "[smoke][publish]") {
+    // Decaying smoke leaves values down to denormals; the cache drops those below
+    // kExportPruneTolerance, and so does publishing, so that a frame rendered live and the same
+    // frame rendered from `eikon simulate`'s cache (a farm's render) read the same fields.
+    MacGrid g = sampleState();
+    g.density(1, 1, 1) = 1.4e-45f;
+    g.density(2, 1, 1) = -0.5f * kExportPruneTolerance;
+    g.density(3, 1, 1) = kExportPruneTolerance;  // kept: the rule is "below"
+    g.temperature(1, 2, 1) = 1e-9f;
+    FieldRegistry live;
+    publishSmoke(g, live, "smoke test");
+    const std::string path = test::scratchDir("smoke_publish_faint") + "/smoke.vdb";
+    exportVdb(path, live, {"density", "temperature", "velocity"});
+    FieldRegistry cached;
+    importVdb(path, cached);
+    for (const char* name : {"density", "temperature"}) {
+        const auto a = live.floatGrid(name);
+        const auto b = cached.floatGrid(name);
+        INFO(name);
+        CHECK(a->activeVoxelCount() == b->activeVoxelCount());
+        size_t differing = 0;
+        for (auto v = a->cbeginValueOn(); v; ++v)
+            differing += b->getConstAccessor().getValue(v.getCoord()) != *v ||
+                         !b->getConstAccessor().isValueOn(v.getCoord());
+        CHECK(differing == 0);
+    }
+    const auto density = live.floatGrid("density")->getConstAccessor();
+    CHECK_FALSE(density.isValueOn(openvdb::Coord(1, 1, 1)));
+    CHECK_FALSE(density.isValueOn(openvdb::Coord(2, 1, 1)));
+    CHECK(density.getValue(openvdb::Coord(3, 1, 1)) == kExportPruneTolerance);
+    CHECK_FALSE(
+        live.floatGrid("temperature")->getConstAccessor().isValueOn(openvdb::Coord(1, 2, 1)));
+}
