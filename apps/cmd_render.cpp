@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,14 +16,18 @@
 #include "apps/frame_files.h"
 #include "apps/memory_limit_option.h"
 #include "apps/output_files.h"
+#include "apps/render_manifest.h"
 #include "apps/render_progress.h"
 #include "apps/scene_driver.h"
 #include "apps/scene_input.h"
 #include "core/error.h"
+#include "core/frame_chunks.h"
 #include "core/frame_list.h"
 #include "core/log.h"
 #include "core/scene.h"
 #include "core/scene_sources.h"
+#include "core/sha256.h"
+#include "core/vdb_sequence.h"  // describeFrameRanges
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 #include "render/gpu_timer.h"
@@ -47,7 +53,33 @@ struct RenderOptions {
     std::string shadows;
     float step = 0.0f;
     float shadowStep = 0.0f;
+    std::string chunk;     // --chunk K/N | auto (core/frame_chunks.h)
+    std::string manifest;  // --manifest FILE (apps/render_manifest.h)
+    bool resume = false;
+    bool fromCache = false;
 };
+
+// What makes this render's pictures what they are, for its manifest: the binary, the input, the
+// options that change pixels (in a fixed order, the backend as chosen) and the frames asked for.
+// Not --from-cache, which gives the same pixels as stepping live (so a farm's manifest, rendered
+// from the cache, equals a workstation's live one), nor --chunk or -o.
+RenderIdentity identityOf(const RenderOptions& o, const Scene& scene, const BackendChoice& choice,
+                          const std::vector<int>& frames) {
+    RenderIdentity id;
+    id.build = sha256OfFile("/proc/self/exe");
+    std::error_code ec;
+    id.input = fs::is_regular_file(o.input, ec) ? sha256OfFile(o.input) : "pattern " + o.input;
+    char numbers[96];
+    std::snprintf(numbers, sizeof numbers, "size=%dx%d step=%.9g shadow_step=%.9g",
+                  scene.render.width, scene.render.height, double(o.step), double(o.shadowStep));
+    id.settings = std::string(numbers) + " shadows=" + o.shadows +
+                  " exr=" + (scene.output.exr ? "1" : "0") + " hold=" + (o.hold ? "1" : "0") +
+                  " up=" + o.up + " grid=" + o.grid + " backend=" +
+                  (choice.backend == Backend::Cpu ? std::string("cpu")
+                                                  : "gpu " + choice.context->rendererName());
+    id.frames = describeFrameRanges(frames);
+    return id;
+}
 
 // The frames a render without --frames writes: the scene's frame_start to frame_end.
 std::vector<int> sceneFrames(const TimeSettings& time) {
@@ -130,11 +162,24 @@ int runRender(const RenderOptions& o) {
     Scene& scene = input.scene;
     // Before --frames: a live simulation starts at the frame_start the scene gives, whichever
     // frames are rendered. It reads the mesh files too: a bad one fails before anything else.
-    SceneDriver driver(scene);
-    const std::vector<int> frames = applyOptions(o, scene);
-    // Every check before the first file: a bad range or -o writes nothing.
-    checkSequenceFrames(scene, frames);
-    const OutputFiles files = resolveOutputFiles(o.output, scene.output, frames, input.oneFrame);
+    if (o.fromCache && scene.simulations.empty())
+        throw Error("--from-cache", o.input + " has no \"simulation\": there is no cache to read");
+    if (o.resume && o.manifest.empty())
+        throw Error("--resume",
+                    "needs --manifest FILE: the record of the frames written, which "
+                    "tells a finished frame from a file that only has its name");
+    SceneDriver driver(scene, o.fromCache);
+    const std::vector<int> allFrames = applyOptions(o, scene);
+    // Every check before the first file: a bad range, chunk or -o writes nothing.
+    checkSequenceFrames(scene, allFrames);
+    const OutputFiles files = resolveOutputFiles(o.output, scene.output, allFrames, input.oneFrame);
+    std::vector<int> frames = allFrames;
+    if (!o.chunk.empty()) {
+        const FrameChunk chunk =
+            parseFrameChunk(o.chunk, [](const char* n) { return std::getenv(n); });
+        frames = framesOfChunk(allFrames, chunk);
+        if (!o.quiet) logInfo(describeChunk(allFrames, chunk));
+    }
     if (!o.quiet)
         for (const std::string& note : input.notes) logInfo(note);
     std::error_code ec;
@@ -143,6 +188,31 @@ int runRender(const RenderOptions& o) {
     removeStalePartials(files.paths(frames));
 
     BackendChoice choice = chooseBackend(o.backend);
+    std::optional<RenderManifest> manifest;
+    if (!o.manifest.empty()) {
+        manifest.emplace(o.manifest, identityOf(o, scene, choice, allFrames));
+        if (o.resume && !manifest->previousIgnored().empty())
+            logWarning(manifest->previousIgnored());
+        manifest->save();
+    }
+    // --resume: the frames whose files this render already wrote are kept; a file at a frame's
+    // name that is not one of them is named, and the frame rendered again.
+    if (o.resume) {
+        std::vector<int> todo;
+        for (int frame : frames) {
+            const std::vector<std::string> paths = files.paths({frame});
+            const std::string why = manifest->whyNotKept(frame, paths);
+            bool present = false;
+            for (const std::string& path : paths) present |= fs::exists(path, ec);
+            if (why.empty()) {
+                if (!o.quiet) logInfo("kept frame " + std::to_string(frame) + " (--resume)");
+                continue;
+            }
+            if (present) logWarning(why + "; rendering it again");
+            todo.push_back(frame);
+        }
+        frames = todo;
+    }
     FrameRenderer renderer(scene, choice.backend, choice.context.get());
     if (!o.quiet) std::printf("%s\n", choice.description.c_str());
     std::fflush(stdout);  // before the progress on stderr
@@ -166,6 +236,7 @@ int runRender(const RenderOptions& o) {
             writeExr(path, image);
             if (!o.quiet) std::printf("wrote %s\n", path.c_str());
         }
+        if (manifest) manifest->record(frame, files.paths({frame}));
         const double writeMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                 .count();
@@ -227,6 +298,20 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::PositiveNumber);
     cmd->add_option("--shadow-step", o->shadowStep, "shadow step in voxels (overrides the scene)")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--chunk", o->chunk,
+                    "render only chunk K/N of the frames (contiguous, sizes within one), or "
+                    "auto: K and N from a Slurm job array (SLURM_ARRAY_TASK_ID, _COUNT, _MIN, "
+                    "_STEP)");
+    cmd->add_option("--manifest", o->manifest,
+                    "write FILE: the render's identity (binary, input, settings, frames) and "
+                    "each frame's files with their SHA-256; rewritten after every frame");
+    cmd->add_flag("--resume", o->resume,
+                  "keep the frames --manifest records as written with the bytes they have; "
+                  "render the rest, and files from another render or changed since (warned)");
+    cmd->add_flag("--from-cache", o->fromCache,
+                  "a scene's live simulation (source \"simulation\") reads the frames eikon "
+                  "simulate wrote to its simulation.cache instead of stepping: the same pictures, "
+                  "any frame without the ones before");
     cmd->footer(
         "Examples (from the repository root):\n  eikon render data/scenes/glass_sphere_fog.json -o "
         "out/ --size 320x240\n  eikon render ../shared/data/vdb/houdini_smoke1.vdb -o "

@@ -27,13 +27,6 @@ void parseFrameRange(const std::string& text, TimeSettings& time) {
     time = parsed;
 }
 
-std::string framePath(const std::string& directory, const std::string& name, int frame,
-                      const char* ext) {
-    char number[16];
-    std::snprintf(number, sizeof(number), "_%04d.", frame);
-    return (std::filesystem::path(directory) / (name + number + ext)).string();
-}
-
 int removeStalePartials(const std::string& directory, const std::string& name, int first, int last,
                         const char* ext) {
     std::vector<std::string> paths;

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/frame_list.h"  // framePath
 #include "core/scene.h"
 
 namespace eikon::app {
@@ -16,10 +17,6 @@ void parseFrameRange(const std::string& text, TimeSettings& time);
 // "--frames" text (core/frame_list.h): its frames, ascending, each once; time.frameStart and
 // frameEnd become the first and the last. Throws eikon::Error.
 std::vector<int> parseFrames(const std::string& text, TimeSettings& time);
-
-// <directory>/<name>_<frame, 4 digits>.<ext>
-std::string framePath(const std::string& directory, const std::string& name, int frame,
-                      const char* ext);
 
 // Removes the "<file>.partial" a killed run left beside frames first..last (core/atomic_write.h
 // names them so; nothing else does), with a note for each; returns how many there were.

@@ -7,7 +7,8 @@
 
 namespace eikon::app {
 
-SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.time.fps, 1.0) {
+SceneDriver::SceneDriver(const Scene& scene, bool simulationFromCache)
+    : animation_(scene), clock_(scene.time.fps, 1.0) {
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const MeshObjectSpec& spec = scene.meshes[m];
         TriangleMesh local = meshShape(spec);
@@ -30,7 +31,7 @@ SceneDriver::SceneDriver(const Scene& scene) : animation_(scene), clock_(scene.t
                 m, fillContainer(containerMesh, spec.fill, scene.path + ":" + spec.jsonPath).mesh);
         }
     }
-    fieldSimulations_ = sim::makeFieldSimulations(scene);
+    fieldSimulations_ = sim::makeFieldSimulations(scene, simulationFromCache);
 }
 
 FrameInputs SceneDriver::frameInputs(int frame, const Scene& base) {

@@ -24,7 +24,9 @@ namespace eikon::app {
 
 class SceneDriver {
 public:
-    explicit SceneDriver(const Scene& scene);
+    // `simulationFromCache`: live simulations read the frames `eikon simulate` cached
+    // (sim/field_simulation.h makeFieldSimulations).
+    explicit SceneDriver(const Scene& scene, bool simulationFromCache = false);
 
     // What the renderer takes for frame `frame` (render/frame_renderer.h FrameInputs): `base`,
     // the scene as the command set it up, with its tracks evaluated at the frame's time; the

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <filesystem>
 #include <limits>
 
 #include "core/error.h"
@@ -67,6 +69,13 @@ std::vector<int> parseFrameList(const std::string& text) {
 bool isContiguous(const std::vector<int>& frames) {
     return !frames.empty() && static_cast<long long>(frames.back()) - frames.front() + 1 ==
                                   static_cast<long long>(frames.size());
+}
+
+std::string framePath(const std::string& directory, const std::string& name, int frame,
+                      const char* ext) {
+    char number[16];
+    std::snprintf(number, sizeof(number), "_%04d.", frame);
+    return (std::filesystem::path(directory) / (name + number + ext)).string();
 }
 
 }  // namespace eikon

@@ -19,4 +19,9 @@ std::vector<int> parseFrameList(const std::string& text);
 // True when `frames` (ascending, each once) is one run first..last with no gap.
 bool isContiguous(const std::vector<int>& frames);
 
+// The file of frame `frame` in a per-frame sequence, as `eikon simulate` writes its caches and
+// `eikon render` its images: <directory>/<name>_<frame, at least 4 digits>.<ext>
+std::string framePath(const std::string& directory, const std::string& name, int frame,
+                      const char* ext);
+
 }  // namespace eikon

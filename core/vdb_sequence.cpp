@@ -125,7 +125,9 @@ VdbSequence findVdbSequence(const std::string& fileOrPattern) {
         seq.frames[std::stoi(digits)] = entry.path().string();
         seq.digits = std::max(seq.digits, int(digits.size()));
     }
-    if (seq.frames.empty()) throw Error(fileOrPattern, "no frames of " + seq.pattern() + " found");
+    if (seq.frames.empty())  // seq.pattern() needs a frame's digits: name the pattern as given
+        throw Error(fileOrPattern,
+                    "no frames of " + given.filename().string() + " found in " + seq.directory);
     for (int f = seq.first(); f <= seq.last(); ++f)
         if (!seq.frames.count(f)) seq.missing.push_back(f);
     checkNoStoppedRun(seq);

@@ -26,7 +26,13 @@ public:
     virtual void publish(FieldRegistry& fields, const std::string& origin) const = 0;
 };
 
-// The simulations the scene's sources show live (type "simulation"); none otherwise.
-std::vector<std::unique_ptr<FieldSimulation>> makeFieldSimulations(const Scene& scene);
+// The simulations the scene's sources show live (type "simulation"); none otherwise. With
+// `fromCache`, each domain's frames are read from the cache `eikon simulate` wrote (its
+// simulation.cache folder, <name>_####.vdb) instead of stepped: a render farm simulates once and
+// renders the frames in parallel. The fields are the ones stepping publishes, bit for bit
+// (sim/smoke_publish.h), so the pictures are the same bytes. A frame the cache lacks, or a cache
+// a stopped run left mixed, is an error naming the file.
+std::vector<std::unique_ptr<FieldSimulation>> makeFieldSimulations(const Scene& scene,
+                                                                   bool fromCache = false);
 
 }  // namespace eikon::sim
