@@ -88,7 +88,7 @@ std::string describeChunk(const std::vector<int>& all, FrameChunk chunk) {
         "chunk " + std::to_string(chunk.index) + "/" + std::to_string(chunk.count) + ": ";
     if (mine.empty())
         return head + "no frames (" + std::to_string(chunk.count) + " chunks of " +
-               std::to_string(all.size()) + " frames)";
+               std::to_string(all.size()) + (all.size() == 1 ? " frame)" : " frames)");
     return head + (mine.size() == 1 ? "frame " : "frames ") + rangeText(mine) + " (" +
            std::to_string(mine.size()) + " of " + std::to_string(all.size()) + ")";
 }

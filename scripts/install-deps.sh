@@ -13,6 +13,7 @@ PACKAGES=(
     catch2
     python3-matplotlib  # scripts/plot_advection_bench.py (run with /usr/bin/python3)
     clang-format  # scripts/check-format.sh
+    slurm-wlm munge  # tests/scripts/test_slurm_farm.sh: a one-node Slurm on 127.0.0.1
     # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes, and llvm-symbolizer for
     # readable stacks in a finding's report.
     clang-14 libclang-rt-14-dev llvm-14
