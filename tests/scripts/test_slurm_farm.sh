@@ -15,7 +15,7 @@ skip() { echo "slurm farm test skipped: $*"; exit 77; }
 fail() { echo "slurm farm test FAILED: $*"; exit 1; }
 
 [ "$(id -u)" = 0 ] || skip "slurmd runs jobs as their users and needs root here"
-for tool in munged slurmctld slurmd sbatch squeue scontrol scancel; do
+for tool in munged slurmctld slurmd sbatch squeue sinfo scontrol scancel; do
     command -v "$tool" >/dev/null || skip "$tool not found (scripts/install-deps.sh installs slurm-wlm and munge)"
 done
 
