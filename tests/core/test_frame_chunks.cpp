@@ -61,7 +61,7 @@ TEST_CASE("chunks cover the frames once, contiguous and even", "[farm]") {
     CHECK(describeChunk(parseFrameList("1-20x3"), {2, 3}) == "chunk 2/3: frames 7..10 (2 of 7)");
 }
 
-TEST_CASE("--chunk takes K/N or a Slurm job array's task", "[farm]") {
+TEST_CASE("the chunk option takes K/N or a Slurm job array's task", "[farm]") {
     const FrameChunk c = parseFrameChunk("2/3", kNoEnv);
     CHECK(c.index == 2);
     CHECK(c.count == 3);

@@ -27,27 +27,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Live smoke (a "simulation" source), 12³, 8 frames of 24×24.
-const char* const kLiveSmoke = R"({
-  "volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 16},
-  "sources": [{"type": "simulation"}],
-  "materials": [{"name": "smoke", "field": "density", "scattering": [8, 8, 8]}],
-  "lights": [{"type": "directional", "direction": [-1, -1, -0.5], "intensity": 4}],
-  "camera": {"position": [0.5, 0.5, 2.6], "look_at": [0.5, 0.5, 0.5]},
-  "render": {"width": 24, "height": 24},
-  "output": {"directory": "out", "name": "shot"},
-  "time": {"fps": 24, "frame_start": 1, "frame_end": 8},
-  "simulation": {
-    "domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 12,
-    "walls": {"+y": "open"}, "cache": "cache",
-    "sources": [{"type": "sphere", "center": [0.5, 0.25, 0.5], "radius": 0.15,
-                 "density_rate": 4, "temperature_rate": 30, "velocity": [0, 1, 0],
-                 "velocity_rate": 10}]
-  }
-})";
+// Live smoke (a "simulation" source), 8 frames; the scene the Slurm test renders at 640²
+// (tests/scripts/test_slurm_farm.sh), here at 24² (--size).
+void writeScene(const std::string& dir) {
+    fs::copy_file(eikon::test::sourcePath("tests/scripts/farm_smoke.json"), dir + "/smoke.json");
+}
 
 RunResult render(const std::string& dir, const std::string& args) {
-    return runEikon("render " + quoted(dir + "/smoke.json") + " --backend cpu " + args, dir);
+    return runEikon("render " + quoted(dir + "/smoke.json") + " --backend cpu --size 24x24 " + args,
+                    dir);
 }
 
 // The header of a manifest and its frame lines sorted by frame: what merging the tasks' gives.
@@ -79,7 +67,7 @@ std::set<std::string> pngsIn(const std::string& dir) {
 TEST_CASE("chunks rendered from the cache are the one-process live render, byte for byte",
           "[cli][farm]") {
     const std::string dir = scratchDir("cli_farm_chunks");
-    writeFile(dir + "/smoke.json", kLiveSmoke);
+    writeScene(dir);
     RunResult r = render(dir, "-o " + quoted(dir + "/local/") + " --quiet --manifest " +
                                   quoted(dir + "/local/manifest.tsv"));
     INFO(r.out << r.err);
@@ -89,7 +77,7 @@ TEST_CASE("chunks rendered from the cache are the one-process live render, byte 
     CHECK(r.exitCode == 1);
     REQUIRE(lines(r.err).size() == 1);
     CHECK(contains(r.err, "run it on the scene first"));
-    CHECK_FALSE(fs::exists(dir + "/early/shot_0001.png"));
+    CHECK_FALSE(fs::exists(dir + "/early/smoke_0001.png"));
 
     r = runEikon("simulate " + quoted(dir + "/smoke.json") + " --quiet", dir);
     REQUIRE(r.exitCode == 0);
@@ -102,7 +90,7 @@ TEST_CASE("chunks rendered from the cache are the one-process live render, byte 
         CHECK(contains(r.err, "chunk " + std::to_string(k) + "/3: frames "));
         manifests.push_back(manifest);
     }
-    CHECK(contains(readFile(manifests[1]), "\n3\tshot_0003.png\t"));  // chunk 2/3: frames 3-5
+    CHECK(contains(readFile(manifests[1]), "\n3\tsmoke_0003.png\t"));  // chunk 2/3: frames 3-5
     CHECK_FALSE(contains(readFile(manifests[1]), "\n6\t"));
     const std::set<std::string> local = pngsIn(dir + "/local");
     REQUIRE(local.size() == 8);
@@ -120,42 +108,42 @@ TEST_CASE("chunks rendered from the cache are the one-process live render, byte 
     CHECK(pngsIn(dir + "/empty").empty());
 }
 
-TEST_CASE("--resume keeps the frames the manifest vouches for and redoes the rest", "[cli][farm]") {
+TEST_CASE("resuming keeps the frames the manifest vouches for and redoes the rest", "[cli][farm]") {
     const std::string dir = scratchDir("cli_farm_resume");
-    writeFile(dir + "/smoke.json", kLiveSmoke);
+    writeScene(dir);
     const std::string out = dir + "/out/";
     const std::string manifest = quoted(dir + "/out/manifest.tsv");
     RunResult r = render(dir, "--frames 1-5 -o " + quoted(out) + " --quiet --manifest " + manifest);
     REQUIRE(r.exitCode == 0);
     std::map<int, std::string> good;
-    for (int f = 1; f <= 5; ++f) good[f] = readFile(out + "shot_000" + std::to_string(f) + ".png");
-    // A task killed midway and worse: frame 2 cut short, 3 overwritten by another picture, 4 gone,
-    // 5 in a manifest of another render.
-    fs::resize_file(out + "shot_0002.png", 100);
-    fs::copy_file(out + "shot_0001.png", out + "shot_0003.png",
+    for (int f = 1; f <= 5; ++f) good[f] = readFile(out + "smoke_000" + std::to_string(f) + ".png");
+    // A task killed midway and worse: frame 2 cut short, 3 overwritten by another picture, 4 gone
+    // with a partial file where it was being written; 1 and 5 as they were.
+    fs::resize_file(out + "smoke_0002.png", 100);
+    fs::copy_file(out + "smoke_0001.png", out + "smoke_0003.png",
                   fs::copy_options::overwrite_existing);
-    fs::remove(out + "shot_0004.png");
-    writeFile(out + "shot_0004.png.partial", "half a picture");
+    fs::remove(out + "smoke_0004.png");
+    writeFile(out + "smoke_0004.png.partial", "half a picture");
     r = render(dir, "--frames 1-5 -o " + quoted(out) + " --manifest " + manifest + " --resume");
     INFO(r.out << r.err);
     REQUIRE(r.exitCode == 0);
     CHECK(contains(r.err, "kept frame 1 (--resume)"));
     CHECK(contains(r.err, "kept frame 5 (--resume)"));
-    CHECK(contains(r.err, "shot_0002.png: its bytes differ from those recorded"));
-    CHECK(contains(r.err, "shot_0003.png: its bytes differ from those recorded"));
+    CHECK(contains(r.err, "smoke_0002.png: its bytes differ from those recorded"));
+    CHECK(contains(r.err, "smoke_0003.png: its bytes differ from those recorded"));
     CHECK_FALSE(contains(r.err, "kept frame 4"));
-    CHECK(contains(r.out, "wrote " + out + "shot_0004.png"));
-    CHECK_FALSE(contains(r.out, "shot_0001.png"));  // kept, not rewritten
-    CHECK_FALSE(fs::exists(out + "shot_0004.png.partial"));
+    CHECK(contains(r.out, "wrote " + out + "smoke_0004.png"));
+    CHECK_FALSE(contains(r.out, "smoke_0001.png"));  // kept, not rewritten
+    CHECK_FALSE(fs::exists(out + "smoke_0004.png.partial"));
     for (int f = 1; f <= 5; ++f)
-        CHECK(readFile(out + "shot_000" + std::to_string(f) + ".png") == good[f]);
+        CHECK(readFile(out + "smoke_000" + std::to_string(f) + ".png") == good[f]);
 
-    // Another render's frames at these names (another size): every one is redone, and said so.
-    r = render(dir, "--frames 1-5 -o " + quoted(out) + " --size 20x20 --manifest " + manifest +
-                        " --resume");
+    // Another render's frames at these names (another view step): every one is redone, and said so.
+    r = render(
+        dir, "--frames 1-5 -o " + quoted(out) + " --step 0.5 --manifest " + manifest + " --resume");
     REQUIRE(r.exitCode == 0);
     CHECK(contains(r.err, "from another render (its settings line differs)"));
-    CHECK(contains(r.err, "shot_0005.png: not recorded as this render's"));
+    CHECK(contains(r.err, "smoke_0005.png: not recorded as this render's"));
     CHECK_FALSE(contains(r.err, "kept frame"));
 
     // Misuse, one line each, nothing written.

@@ -86,27 +86,10 @@ sinfo -h -o %t 2>/dev/null | grep -q idle ||
     skip "the node did not come up: $(tail -n 1 "$T/log/slurmd.log" 2>/dev/null)"
 echo "slurm up: slurmctld on 127.0.0.1:$port, node eikon1 with $(nproc) CPUs"
 
-# The scene: live smoke, 8 frames; 640² so that a frame takes long enough to be killed inside.
+# The scene (tests/scripts/farm_smoke.json): live smoke, 8 frames; 640² so that a frame takes long
+# enough to be killed inside.
 mkdir -p "$T/scene"
-cat >"$T/scene/farm.json" <<'SCENE'
-{
-  "volume": {"bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 64},
-  "sources": [{"type": "simulation"}],
-  "materials": [{"name": "smoke", "field": "density", "scattering": [8, 8, 8]}],
-  "lights": [{"type": "directional", "direction": [-1, -1, -0.5], "intensity": 4}],
-  "camera": {"position": [0.5, 0.5, 2.6], "look_at": [0.5, 0.5, 0.5]},
-  "render": {"width": 640, "height": 640},
-  "output": {"directory": "out", "name": "smoke"},
-  "time": {"fps": 24, "frame_start": 1, "frame_end": 8},
-  "simulation": {
-    "domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "resolution": 16,
-    "walls": {"+y": "open"}, "cache": "cache",
-    "sources": [{"type": "sphere", "center": [0.5, 0.25, 0.5], "radius": 0.15,
-                 "density_rate": 4, "temperature_rate": 30, "velocity": [0, 1, 0],
-                 "velocity_rate": 10}]
-  }
-}
-SCENE
+cp "$repo/tests/scripts/farm_smoke.json" "$T/scene/farm.json"
 
 t0=$(date +%s.%N)
 "$EIKON" render "$T/scene/farm.json" --backend cpu --quiet -o "$T/local/" \
