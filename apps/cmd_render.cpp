@@ -151,6 +151,30 @@ void printTransportStats(const FrameRenderer& renderer, const std::vector<StageT
         last.rounds);
 }
 
+// --resume: of `frames`, those not yet written by this render. A frame whose files the manifest
+// vouches for is kept; a file at a frame's name that is not one of them is named, and the frame
+// rendered again.
+std::vector<int> framesLeftToRender(const RenderManifest& manifest, const OutputFiles& files,
+                                    const std::vector<int>& frames, bool quiet) {
+    std::vector<int> left;
+    for (int frame : frames) {
+        const std::vector<std::string> paths = files.paths({frame});
+        const std::string why = manifest.whyNotKept(frame, paths);
+        if (why.empty()) {
+            if (!quiet) logInfo("kept frame " + std::to_string(frame) + " (--resume)");
+            continue;
+        }
+        std::error_code ec;
+        for (const std::string& path : paths)
+            if (fs::exists(path, ec)) {
+                logWarning(why + "; rendering it again");
+                break;
+            }
+        left.push_back(frame);
+    }
+    return left;
+}
+
 int runRender(const RenderOptions& o) {
     InputChoices choices;
     choices.size = o.size;
@@ -195,24 +219,7 @@ int runRender(const RenderOptions& o) {
             logWarning(manifest->previousIgnored());
         manifest->save();
     }
-    // --resume: the frames whose files this render already wrote are kept; a file at a frame's
-    // name that is not one of them is named, and the frame rendered again.
-    if (o.resume) {
-        std::vector<int> todo;
-        for (int frame : frames) {
-            const std::vector<std::string> paths = files.paths({frame});
-            const std::string why = manifest->whyNotKept(frame, paths);
-            bool present = false;
-            for (const std::string& path : paths) present |= fs::exists(path, ec);
-            if (why.empty()) {
-                if (!o.quiet) logInfo("kept frame " + std::to_string(frame) + " (--resume)");
-                continue;
-            }
-            if (present) logWarning(why + "; rendering it again");
-            todo.push_back(frame);
-        }
-        frames = todo;
-    }
+    if (o.resume) frames = framesLeftToRender(*manifest, files, frames, o.quiet);
     FrameRenderer renderer(scene, choice.backend, choice.context.get());
     if (!o.quiet) std::printf("%s\n", choice.description.c_str());
     std::fflush(stdout);  // before the progress on stderr
