@@ -39,6 +39,10 @@ void writeExr(const std::string& path, const Image& image);  // RGBA, 32-bit flo
 // Reads an RGBA (or RGB, alpha 1) EXR; throws eikon::Error naming the file.
 Image readExr(const std::string& path);
 
+// Reads any PNG as 8-bit RGB, each channel as its display value / 255 (not linear), alpha 1.
+// Throws eikon::Error naming the file.
+Image readPng(const std::string& path);
+
 // How far `test` is from `reference` (same size), over the RGB channels of all pixels.
 struct ImageDifference {
     double rmse = 0.0;          // root mean square difference

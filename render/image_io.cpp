@@ -1,5 +1,6 @@
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -39,6 +40,24 @@ void onPngError(png_structp png, png_const_charp message) {
 }
 
 void onPngWarning(png_structp, png_const_charp) {}
+
+// Images read back are bounded: a corrupt header must not ask for gigabytes.
+constexpr int64_t kMaxImageSide = 32768;
+constexpr int64_t kMaxImagePixels = int64_t(1) << 26;
+
+std::string imageSizeProblem(int64_t width, int64_t height) {
+    if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide ||
+        width * height > kMaxImagePixels)
+        return "its header says " + std::to_string(width) + "x" + std::to_string(height) +
+               " pixels, beyond what Eikon reads (" + std::to_string(kMaxImageSide) + " a side, " +
+               std::to_string(kMaxImagePixels) + " in all)";
+    return "";
+}
+
+void checkImageSize(const std::string& path, int64_t width, int64_t height) {
+    const std::string problem = imageSizeProblem(width, height);
+    if (!problem.empty()) throw Error(path, problem);
+}
 
 void writePngFile(const std::string& file, const std::string& nameForErrors, int width, int height,
                   const std::vector<unsigned char>& rgb) {
@@ -122,7 +141,10 @@ Image readExr(const std::string& path) {
     try {
         Imf::InputFile in(path.c_str());
         const Imath::Box2i window = in.header().dataWindow();
-        Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+        const int64_t width = int64_t(window.max.x) - window.min.x + 1;
+        const int64_t height = int64_t(window.max.y) - window.min.y + 1;
+        checkImageSize(path, width, height);
+        Image image{int(width), int(height)};
         Imf::FrameBuffer fb;
         const size_t xStride = sizeof(glm::vec4);
         const size_t yStride = xStride * size_t(image.width);
@@ -135,9 +157,53 @@ Image readExr(const std::string& path) {
         in.setFrameBuffer(fb);
         in.readPixels(window.min.y, window.max.y);
         return image;
+    } catch (const Error&) {
+        throw;
     } catch (const std::exception& e) {
         throw Error(path, std::string("cannot read as EXR: ") + e.what());
     }
+}
+
+Image readPng(const std::string& path) {
+    FILE* fp = std::fopen(path.c_str(), "rb");
+    if (!fp) throw Error(path, std::string("cannot open: ") + std::strerror(errno));
+    PngFailure failure;
+    png_structp png =
+        png_create_read_struct(PNG_LIBPNG_VER_STRING, &failure, onPngError, onPngWarning);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    // Declared before setjmp: a longjmp back must not skip their destructors' bookkeeping.
+    Image image;
+    std::vector<unsigned char> row;
+    if (!png || !info || setjmp(png_jmpbuf(png))) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        std::fclose(fp);
+        throw Error(path, "cannot read as PNG: " + failure.reason);
+    }
+    png_init_io(png, fp);
+    png_read_info(png, info);
+    const int64_t width = png_get_image_width(png, info);
+    const int64_t height = png_get_image_height(png, info);
+    if (!imageSizeProblem(width, height).empty()) {
+        failure.reason = imageSizeProblem(width, height);
+        png_longjmp(png, 1);
+    }
+    // Any PNG as 8-bit RGB: palettes and grey expanded, 16 bits cut to 8, alpha dropped.
+    png_set_expand(png);
+    png_set_strip_16(png);
+    png_set_strip_alpha(png);
+    png_set_gray_to_rgb(png);
+    png_read_update_info(png, info);
+    image = Image(int(width), int(height));
+    row.resize(size_t(width) * 3);
+    for (int y = 0; y < int(height); ++y) {
+        png_read_row(png, row.data(), nullptr);
+        for (int x = 0; x < int(width); ++x)
+            image.at(x, y) = glm::vec4(row[size_t(x) * 3] / 255.0f, row[size_t(x) * 3 + 1] / 255.0f,
+                                       row[size_t(x) * 3 + 2] / 255.0f, 1.0f);
+    }
+    png_destroy_read_struct(&png, &info, nullptr);
+    std::fclose(fp);
+    return image;
 }
 
 ImageDifference compareImages(const Image& test, const Image& reference) {
