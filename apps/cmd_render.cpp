@@ -20,6 +20,7 @@
 #include "apps/render_progress.h"
 #include "apps/scene_driver.h"
 #include "apps/scene_input.h"
+#include "apps/stats_file.h"
 #include "core/error.h"
 #include "core/frame_chunks.h"
 #include "core/frame_list.h"
@@ -48,6 +49,7 @@ struct RenderOptions {
     std::string grid;
     std::string size;
     bool stats = false;
+    std::string statsJson;  // --stats-json FILE (apps/stats_file.h)
     std::string backend = "auto";
     bool exr = false;
     std::string shadows;
@@ -151,6 +153,24 @@ void printTransportStats(const FrameRenderer& renderer, const std::vector<StageT
         last.rounds);
 }
 
+// The frame's counters for --stats-json: what the light-transport method traced (nothing when it
+// reused its light), the picture's and the volume's size.
+FrameCounters frameCounters(const FrameRenderer& renderer, int64_t stepsBefore) {
+    const TransportStats last = renderer.lastTransportStats();
+    const int64_t steps = renderer.transportSteps() - stepsBefore;
+    const RenderVolume& v = renderer.volume();
+    FrameCounters c{{"width", renderer.scene().render.width},
+                    {"height", renderer.scene().render.height},
+                    {"volume_voxels", double(v.resolution.x) * v.resolution.y * v.resolution.z}};
+    if (steps > 0) {
+        c["particles_traced"] = double(last.particlesTraced);
+        c["particle_steps"] = double(steps);
+        c["particles_cut"] = double(last.particlesCut);
+        c["transport_rounds"] = last.rounds;
+    }
+    return c;
+}
+
 // --resume: of `frames`, those not yet written by this render. A frame whose files the manifest
 // vouches for is kept; a file at a frame's name that is not one of them is named, and the frame
 // rendered again.
@@ -228,6 +248,8 @@ int runRender(const RenderOptions& o) {
     const bool softwareGl =
         renderer.context() && isSoftwareRenderer(renderer.context()->rendererName());
     int64_t transportSteps = 0;  // before this frame
+    std::optional<StatsFile> statsFile;
+    if (!o.statsJson.empty()) statsFile.emplace(o.statsJson);
     const auto renderFrame = [&](size_t index, int frame) {
         progress.startFrame(index, frame);
         const Image image = renderer.render(driver.frameInputs(frame, scene));
@@ -255,6 +277,7 @@ int runRender(const RenderOptions& o) {
             printStats(stats, writeMs, softwareGl);
             printTransportStats(renderer, stats, transportSteps);
         }
+        if (statsFile) statsFile->record(frame, frameCounters(renderer, transportSteps));
         transportSteps = renderer.transportSteps();
         std::fflush(stdout);
         progress.endFrame();
@@ -291,6 +314,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                     "a VDB input's level set to render as a solid (glass over a floor), by name "
                     "or index (default: the density; without one, the file's level set)");
     cmd->add_flag("--stats", o->stats, "print time per stage (CPU and GPU)");
+    cmd->add_option("--stats-json", o->statsJson,
+                    "write FILE: each frame's counters as JSON (particles traced and their "
+                    "steps, sizes; no times), for scripts and eikon regress");
     cmd->add_flag("--quiet", o->quiet,
                   "print nothing but errors, warnings and --stats: no 'wrote' lines, no progress "
                   "(which is a line per frame on stderr, and a status line on a terminal)");

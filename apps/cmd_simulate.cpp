@@ -15,6 +15,7 @@
 #include "apps/commands.h"
 #include "apps/frame_files.h"
 #include "apps/memory_limit_option.h"
+#include "apps/stats_file.h"
 #include "core/cache_run_marker.h"
 #include "core/error.h"
 #include "core/field_registry.h"
@@ -35,6 +36,7 @@ struct SimulateOptions {
     std::string outputDir;
     std::string frames;
     bool quiet = false;
+    std::string statsJson;  // --stats-json FILE (apps/stats_file.h)
 };
 
 // Where a run is: "3/24, about 25 s left" from the frames stepped so far and their time (the
@@ -124,9 +126,15 @@ std::string keepCacheConsistent(const std::vector<Domain>& domains, int lastComp
 
 // Steps `domain` through `frame` and, when `write`, writes the frame's file; returns the frame's
 // line (without its progress) and its milliseconds.
-std::string stepFrame(Domain& domain, int frame, bool write, double& ms) {
+std::string stepFrame(Domain& domain, int frame, bool write, double& ms, FrameCounters& counters) {
     const auto t0 = std::chrono::steady_clock::now();
     const sim::SmokeStepStats stats = domain.solver.advanceFrame();
+    // A labelled domain's counters carry its label ("cg_iterations/left").
+    const std::string suffix = domain.spec.label.empty() ? "" : "/" + domain.spec.label;
+    counters["substeps" + suffix] = stats.substeps;
+    counters["cg_iterations" + suffix] = stats.cgIterations;
+    counters["max_cg_iterations" + suffix] = stats.maxCgIterations;
+    counters["cfl" + suffix] = stats.cfl;
     std::string path;
     if (write) {
         path = framePath(domain.directory, domain.spec.cacheName, frame, "vdb");
@@ -207,16 +215,21 @@ int runSimulate(const SimulateOptions& o) {
     }
     try {
         const int total = written.frameEnd - first + 1;
+        std::optional<StatsFile> statsFile;
+        if (!o.statsJson.empty()) statsFile.emplace(o.statsJson);
         for (int frame = first; frame <= written.frameEnd; ++frame) {
+            FrameCounters counters;
             for (Domain& domain : domains) {
                 double ms = 0.0;
-                const std::string line = stepFrame(domain, frame, frame >= written.frameStart, ms);
+                const std::string line =
+                    stepFrame(domain, frame, frame >= written.frameStart, ms, counters);
                 totalMs += ms;
                 if (o.quiet) continue;
                 std::printf("%s (%s)\n", line.c_str(),
                             progressText(frame - first + 1, total, totalMs).c_str());
                 std::fflush(stdout);
             }
+            if (statsFile && frame >= written.frameStart) statsFile->record(frame, counters);
             lastComplete = frame;
             if (frame >= written.frameStart) markCacheRuns(domains, written, frame);
         }
@@ -244,6 +257,9 @@ void addSimulateCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("-o,--output", o->outputDir,
                     "cache folder (default: the scene's simulation.cache)");
     cmd->add_option("--frames", o->frames, "frames to write FIRST-LAST, or one frame");
+    cmd->add_option("--stats-json", o->statsJson,
+                    "write FILE: each written frame's counters as JSON (substeps, CG iterations, "
+                    "CFL; no times), for scripts and eikon regress");
     cmd->add_flag("--quiet", o->quiet,
                   "print nothing but errors and warnings: no line per frame (which gives the "
                   "frame's substeps, CG iterations, CFL, time, file, and the frames left)");
