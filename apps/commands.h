@@ -10,6 +10,7 @@ void addRenderCommand(CLI::App& app, int& exitCode);
 void addDiffCommand(CLI::App& app, int& exitCode);
 void addViewCommand(CLI::App& app, int& exitCode);
 void addSimulateCommand(CLI::App& app, int& exitCode);
+void addRegressCommand(CLI::App& app, int& exitCode);
 // `eikon bench smoke|advection|voxelize|arap|methods|soak`: benchmark programs (timings live here,
 // never in unit tests).
 void addBenchCommand(CLI::App& app, int& exitCode);

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     eikon::app::addDiffCommand(app, exitCode);
     eikon::app::addViewCommand(app, exitCode);
     eikon::app::addSimulateCommand(app, exitCode);
+    eikon::app::addRegressCommand(app, exitCode);
     eikon::app::addBenchCommand(app, exitCode);
     eikon::app::setBenchCommandLine(eikon::app::joinCommandLine(argc, argv));
     try {
