@@ -1,5 +1,5 @@
 // `eikon bench soak`: a live scene simulated and rendered frame after frame, as `eikon render`
-// and `eikon view` do (apps/scene_driver.h hands the frame renderer each frame's inputs), for
+// and `eikon view` do (pipeline/scene_driver.h hands the frame renderer each frame's inputs), for
 // thousands of frames with no image written, watching the process's memory: a leak shows as
 // growth after the warm-up. Every --every frames it samples VmRSS and VmHWM (/proc/self/status),
 // RssAnon, the bytes malloc has handed out, the GL objects alive (render/gl_objects.h), the fields
@@ -27,14 +27,14 @@
 #include <string>
 #include <vector>
 
-#include "apps/backend_choice.h"
 #include "apps/bench_report.h"
 #include "apps/commands.h"
 #include "apps/process_memory.h"
-#include "apps/scene_driver.h"
-#include "apps/scene_input.h"
 #include "core/error.h"
 #include "core/scene.h"
+#include "pipeline/backend_choice.h"
+#include "pipeline/scene_driver.h"
+#include "pipeline/scene_input.h"
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 #include "render/gl_objects.h"

@@ -11,15 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "apps/backend_choice.h"
 #include "apps/commands.h"
 #include "apps/frame_files.h"
 #include "apps/memory_limit_option.h"
 #include "apps/output_files.h"
 #include "apps/render_manifest.h"
 #include "apps/render_progress.h"
-#include "apps/scene_driver.h"
-#include "apps/scene_input.h"
 #include "apps/stats_file.h"
 #include "core/error.h"
 #include "core/frame_chunks.h"
@@ -29,6 +26,9 @@
 #include "core/scene_sources.h"
 #include "core/sha256.h"
 #include "core/vdb_sequence.h"  // describeFrameRanges
+#include "pipeline/backend_choice.h"
+#include "pipeline/scene_driver.h"
+#include "pipeline/scene_input.h"
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 #include "render/gpu_timer.h"

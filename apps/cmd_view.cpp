@@ -9,12 +9,12 @@
 
 #include "apps/commands.h"
 #include "apps/memory_limit_option.h"
-#include "apps/scene_driver.h"
-#include "apps/scene_input.h"
 #include "apps/view_handles.h"
 #include "apps/viewer.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "pipeline/scene_driver.h"
+#include "pipeline/scene_input.h"
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 
@@ -63,7 +63,7 @@ int runView(const ViewOptions& o) {
     ViewHandles handles(driver, scene);
     if (options.drag) handles.select(options.drag->handle);
     GlfwWindowContext window(scene.render.width, scene.render.height, "eikon view");
-    // "auto": the window's GPU unless it is a software rasterizer (see apps/backend_choice.h).
+    // "auto": the window's GPU unless it is a software rasterizer (see pipeline/backend_choice.h).
     const bool gpu =
         o.backend == "gpu" || (o.backend == "auto" && !isSoftwareRenderer(window.rendererName()));
     FrameRenderer renderer(scene, gpu ? Backend::Gpu : Backend::Cpu, &window);

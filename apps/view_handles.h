@@ -11,8 +11,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "apps/scene_driver.h"
 #include "core/camera.h"
+#include "pipeline/scene_driver.h"
 #include "render/image.h"
 
 namespace eikon::app {

@@ -10,8 +10,8 @@
 #include <glm/vec2.hpp>
 
 #include "apps/orbit_camera.h"
-#include "apps/scene_driver.h"
 #include "apps/view_handles.h"
+#include "pipeline/scene_driver.h"
 #include "render/display_pass.h"
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"

@@ -32,7 +32,7 @@ struct VolumeSettings {
 };
 
 // Simulation: the fields of the scene's own smoke simulation (density, temperature, velocity),
-// stepped live frame by frame by the program rendering the scene (apps/scene_driver.h) instead
+// stepped live frame by frame by the program rendering the scene (pipeline/scene_driver.h) instead
 // of read from a cache; the scene must have a "simulation" section.
 enum class SourceType { Vdb, VdbSequence, Sphere, Box, Simulation };
 

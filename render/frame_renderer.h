@@ -36,7 +36,7 @@ class ViewPassGpu;
 enum class Backend { Gpu, Cpu };
 
 // What the program rendering a scene hands the renderer for one frame, besides what the scene's
-// own sources load (apps/scene_driver.h makes them each frame): the scene as it stands at that
+// own sources load (pipeline/scene_driver.h makes them each frame): the scene as it stands at that
 // frame (its tracks evaluated, a viewer's camera), the object-space meshes made or moved since the
 // last frame (a file's, a deformer's output), and the fields it computed itself (a live smoke
 // simulation: sources of type Simulation). The renderer keeps what it was given: a mesh or a

@@ -314,9 +314,24 @@ GLuint linkProgram(const std::vector<GLuint>& shaders, const ShaderSource& sourc
 
 }  // namespace
 
+namespace {
+std::string& shaderDirectoryFallback() {
+    static std::string directory;
+    return directory;
+}
+}  // namespace
+
+void setShaderDirectoryFallback(const std::string& directory) {
+    shaderDirectoryFallback() = directory;
+}
+
 std::string shaderDirectory() {
     const char* env = std::getenv("EIKON_SHADER_DIR");
-    return env && *env ? env : EIKON_SHADER_DIR;
+    if (env && *env) return env;
+    std::error_code ec;
+    if (!shaderDirectoryFallback().empty() && !fs::is_directory(EIKON_SHADER_DIR, ec))
+        return shaderDirectoryFallback();
+    return EIKON_SHADER_DIR;
 }
 
 ShaderSource expandShaderSource(const std::string& path, const std::vector<std::string>& defines) {

@@ -12,8 +12,11 @@
 
 namespace eikon {
 
-// The shaders root: $EIKON_SHADER_DIR when set and not empty, else the build's shaders folder.
+// The shaders root: $EIKON_SHADER_DIR when set and not empty, else the build's shaders folder,
+// else (an installed library far from its source tree) the fallback set below.
 std::string shaderDirectory();
+// Where the shaders are when the build's folder is gone: the installed library's share/ folder.
+void setShaderDirectoryFallback(const std::string& directory);
 
 // Line numbers handed to the compiler encode the file: line L of file k is numbered
 // k * kShaderLinesPerFile + L (and `#line` also names source string k). Mesa resets the source

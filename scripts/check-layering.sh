@@ -5,7 +5,13 @@
 #   core            math, fields, scenes; no GL, no simulation
 #   sim             simulations, on core
 #   render          GL, on core; loads the GLSL in shaders/
-#   apps            the command line; may use every library
+#   pipeline        what wires sim and render for a frame (input, backend, driver); on both
+#   api             the public library (libeikon.so) behind include/eikon/; on pipeline and below
+#   include         the public headers (include/eikon/); include nothing of the project's but
+#                   each other, and every library may include them (eikon/error.h is the one
+#                   exception type)
+#   apps            the command line; may use every library but api (the command line links the
+#                   static libraries, not libeikon.so)
 #   shaders/shared  the math compiled both as GLSL and as C++; includes no other project folder,
 #                   so core may include it without pulling in GL (core/mesh_voxelize.cpp does: the
 #                   CPU voxelizer runs the very code of the voxelize shaders)
@@ -30,10 +36,13 @@ ROOT="${1:-$(dirname "$0")/..}"
 cd "$ROOT"
 
 declare -A MAY_INCLUDE=(
-    [core]="core shaders/shared"
-    [sim]="sim core shaders/shared"
-    [render]="render core shaders/shared shaders"
-    [apps]="apps render sim core shaders/shared shaders"
+    [core]="core shaders/shared include"
+    [sim]="sim core shaders/shared include"
+    [render]="render core shaders/shared shaders include"
+    [pipeline]="pipeline render sim core shaders/shared shaders include"
+    [api]="api pipeline render sim core shaders/shared shaders include"
+    [include]="include"
+    [apps]="apps pipeline render sim core shaders/shared shaders include"
     [shaders/shared]="shaders/shared"
     [shaders]="shaders shaders/shared"
 )
@@ -47,7 +56,8 @@ library_of() {
         shaders/test/*) lib=tests ;;
         shaders/shared/*) lib=shaders/shared ;;
         shaders/*) lib=shaders ;;
-        core/* | sim/* | render/* | apps/* | tests/*) lib="${1%%/*}" ;;
+        core/* | sim/* | render/* | pipeline/* | api/* | include/* | apps/* | tests/*)
+            lib="${1%%/*}" ;;
         *) lib="" ;;
     esac
 }
@@ -79,7 +89,7 @@ violation() {
 
 # ---- includes -------------------------------------------------------------------------------
 mapfile -t files < <(
-    find core sim render apps -type f \( -name '*.h' -o -name '*.hpp' -o -name '*.cpp' \)
+    find core sim render pipeline api include apps -type f \( -name '*.h' -o -name '*.hpp' -o -name '*.cpp' \)
     find shaders -path shaders/test -prune -o -type f \
         \( -name '*.h' -o -name '*.comp' -o -name '*.glsl' -o -name '*.vert' -o -name '*.frag' \) \
         -print
@@ -99,7 +109,7 @@ while IFS= read -r hit; do
     owner="$lib"
     if [ "$quote" = "<" ]; then
         # System headers are fine, except the GL ones below render.
-        if [[ "$owner" =~ ^(core|sim|shaders/shared)$ && "$name" =~ $GL_HEADER ]]; then
+        if [[ "$owner" =~ ^(core|sim|shaders/shared|pipeline|api|include)$ && "$name" =~ $GL_HEADER ]]; then
             violation "$file:$line: $owner must not include <$name> ($owner may include:" \
                 "${MAY_INCLUDE[$owner]}; GL headers only in render, and GLFW in apps)"
         fi
@@ -110,11 +120,18 @@ while IFS= read -r hit; do
         continue
     fi
     # Resolved as the compilers do: beside the including file first, else from the include root
-    # (the repository for C++, shaders/ for GLSL; render/shader_program.cpp resolves that way).
+    # (the repository for C++, shaders/ for GLSL; render/shader_program.cpp resolves that way),
+    # and the public headers from include/ ("eikon/error.h").
     root=.
     [[ "$file" =~ \.(comp|glsl|vert|frag)$ ]] && root=shaders
     beside="${file%/*}/$name"
-    if [ -f "$beside" ]; then normalize "$beside"; else normalize "$root/$name"; fi
+    if [ -f "$beside" ]; then
+        normalize "$beside"
+    elif [ "$root" = . ] && [ ! -e "$name" ] && [ -f "include/$name" ]; then
+        normalize "include/$name"
+    else
+        normalize "$root/$name"
+    fi
     library_of "$norm"
     [ -n "$lib" ] || continue # outside the project's folders: a third-party header
     if [[ " ${MAY_INCLUDE[$owner]} " != *" $lib "* ]]; then
@@ -128,15 +145,19 @@ declare -A MUST_NOT_LINK=(
     [core]='^(eikon_sim|eikon_render)$|epoxy|egl|opengl|glfw|glew'
     [sim]='^eikon_render$|epoxy|egl|opengl|glfw|glew'
     [render]='^eikon_sim$'
-    [apps]='epoxy|egl|opengl|glew'
+    [pipeline]='^eikon_api$|epoxy|egl|opengl|glfw|glew'
+    [api]='epoxy|egl|opengl|glfw|glew'
+    [apps]='^eikon_api$|epoxy|egl|opengl|glew'
 )
 declare -A MAY_LINK=(
     [core]="no other eikon library, no OpenGL/EGL/epoxy/GLFW"
     [sim]="eikon_core, no OpenGL/EGL/epoxy/GLFW"
     [render]="eikon_core, OpenGL/EGL/epoxy/GLFW"
-    [apps]="every eikon library and GLFW, no OpenGL/EGL/epoxy"
+    [pipeline]="eikon_sim, eikon_render and below, no OpenGL/EGL/epoxy/GLFW"
+    [api]="eikon_pipeline and below, no OpenGL/EGL/epoxy/GLFW (they come inside eikon_render)"
+    [apps]="every eikon library but eikon_api, and GLFW, no OpenGL/EGL/epoxy"
 )
-for owner in core sim render apps; do
+for owner in core sim render pipeline api apps; do
     cmake_file="$owner/CMakeLists.txt"
     [ -f "$cmake_file" ] || continue
     # Each find/link command as "line<TAB>arguments", joined over its continuation lines.

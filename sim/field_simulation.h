@@ -1,6 +1,6 @@
 #pragma once
 // A simulation that writes fields the renderer reads (the scene's smoke: density, temperature,
-// velocity): one interface, so that the scene driver (apps/scene_driver.h) holds a list of them
+// velocity): one interface, so that the scene driver (pipeline/scene_driver.h) holds a list of them
 // built by one factory. Stepped live, frame by frame, when a source of type "simulation" shows
 // it; frame f holds the state after f − frame_start + 1 frames, as in `eikon simulate`'s cache.
 #include <memory>

@@ -1,6 +1,6 @@
 #pragma once
 // A scene mesh that something moves frame by frame: a water surface, a jelly, an ARAP deformer's
-// handles. One interface, so that the scene driver (apps/scene_driver.h) holds a list of them
+// handles. One interface, so that the scene driver (pipeline/scene_driver.h) holds a list of them
 // built by one factory instead of a field and a branch per kind; a new kind of moving mesh is a
 // class here and a line in makeMovingMesh.
 //

@@ -1,5 +1,5 @@
 // A long live run holds what its first frames made, and no more: frame after frame of new smoke
-// fields (what a live simulation hands the renderer, apps/scene_driver.h), rendered on the GPU,
+// fields (what a live simulation hands the renderer, pipeline/scene_driver.h), rendered on the GPU,
 // leave as many GL objects alive and as many fields in the renderer as the first frames did.
 // Counts, not memory: `eikon bench soak` measures the memory over thousands of frames; these
 // counts are exact, so a GL object or a field made per frame and never freed fails here.

@@ -9,7 +9,8 @@ trap 'rm -rf "$WORK"' EXIT
 TREE="$WORK/tree"
 mkdir "$TREE" "$WORK/saved"
 # The folders the checks read; no build trees.
-cp -r "$REPO"/{core,sim,render,apps,shaders,tests,CMakeLists.txt,.clang-format} "$TREE"/
+cp -r "$REPO"/{core,sim,render,pipeline,api,include,apps,shaders,tests,CMakeLists.txt,.clang-format} \
+    "$TREE"/
 
 passed=0 failed=0
 
@@ -44,7 +45,7 @@ planted=()
 # The first source of a library in the copy, so that renames elsewhere do not break the test.
 first_cpp() { (cd "$TREE" && find "$1" -maxdepth 1 -name '*.cpp' | sort | head -n 1); }
 core_cpp="$(first_cpp core)" sim_cpp="$(first_cpp sim)" render_cpp="$(first_cpp render)"
-apps_cpp="$(first_cpp apps)"
+apps_cpp="$(first_cpp apps)" pipeline_cpp="$(first_cpp pipeline)"
 
 # ---- layering -------------------------------------------------------------------------------
 expect "layering passes on the tree" layering 0 \
@@ -89,6 +90,22 @@ restore
 plant apps/CMakeLists.txt 'target_link_libraries(eikon PRIVATE PkgConfig::EPOXY)'
 expect "apps linking epoxy fails" layering 1 \
     "eikon: apps/CMakeLists.txt:2: apps must not link PkgConfig::EPOXY .*"
+restore
+
+# The command line links the static libraries, never libeikon.so (two copies of every global).
+plant apps/CMakeLists.txt 'target_link_libraries(eikon PRIVATE eikon_api)'
+expect "apps linking eikon_api fails" layering 1 \
+    "eikon: apps/CMakeLists.txt:2: apps must not link eikon_api .*"
+restore
+
+plant "$pipeline_cpp" '#include "apps/commands.h"'
+expect "pipeline including apps fails" layering 1 \
+    "eikon: $pipeline_cpp:2: pipeline must not include apps/commands.h \(pipeline may include: .*\)"
+restore
+
+plant include/eikon/eikon.h '#include "core/scene.h"'
+expect "a public header including core fails" layering 1 \
+    "eikon: include/eikon/eikon.h:2: include must not include core/scene.h \(include may include: include\)"
 restore
 
 # ---- format ---------------------------------------------------------------------------------

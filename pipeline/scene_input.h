@@ -9,7 +9,7 @@
 
 #include "core/scene.h"
 
-namespace eikon::app {
+namespace eikon {
 
 struct InputChoices {
     std::string size;          // "" or WIDTHxHEIGHT
@@ -34,4 +34,4 @@ struct SceneInput {
 // (--grid also with a sequence: level-set sequences are not rendered without a scene).
 SceneInput readSceneInput(const std::string& input, const InputChoices& choices);
 
-}  // namespace eikon::app
+}  // namespace eikon

@@ -1,8 +1,8 @@
-#include "apps/backend_choice.h"
+#include "pipeline/backend_choice.h"
 
 #include "core/error.h"
 
-namespace eikon::app {
+namespace eikon {
 namespace {
 
 std::string describe(const GlContext& gl) {
@@ -42,4 +42,4 @@ BackendChoice chooseBackend(const std::string& requested) {
     return choice;
 }
 
-}  // namespace eikon::app
+}  // namespace eikon

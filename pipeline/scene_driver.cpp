@@ -1,11 +1,11 @@
-#include "apps/scene_driver.h"
+#include "pipeline/scene_driver.h"
 
 #include "core/error.h"
 #include "core/mesh_placement.h"
 #include "sim/container_fill.h"
 #include "sim/refractive_mesh.h"
 
-namespace eikon::app {
+namespace eikon {
 
 SceneDriver::SceneDriver(const Scene& scene, bool simulationFromCache)
     : animation_(scene), clock_(scene.time.fps, 1.0) {
@@ -107,4 +107,4 @@ glm::vec3 SceneDriver::handleTranslation(HandleRef h) const {
     return arapOf(h.mesh).withDrags(preparedScene()).handles[h.handle].translation;
 }
 
-}  // namespace eikon::app
+}  // namespace eikon

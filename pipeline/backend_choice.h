@@ -9,7 +9,7 @@
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 
-namespace eikon::app {
+namespace eikon {
 
 struct BackendChoice {
     Backend backend = Backend::Cpu;
@@ -20,4 +20,4 @@ struct BackendChoice {
 // Throws eikon::Error for "gpu" without a usable OpenGL 4.3.
 BackendChoice chooseBackend(const std::string& requested);
 
-}  // namespace eikon::app
+}  // namespace eikon

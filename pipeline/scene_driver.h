@@ -20,7 +20,7 @@
 #include "sim/field_simulation.h"
 #include "sim/moving_mesh.h"
 
-namespace eikon::app {
+namespace eikon {
 
 class SceneDriver {
 public:
@@ -81,4 +81,4 @@ private:
     const Scene& preparedScene() const;
 };
 
-}  // namespace eikon::app
+}  // namespace eikon

@@ -1,4 +1,4 @@
-#include "apps/scene_input.h"
+#include "pipeline/scene_input.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -10,7 +10,7 @@
 #include "core/vdb_sequence.h"
 #include "render/light_transport_registry.h"
 
-namespace eikon::app {
+namespace eikon {
 namespace {
 
 void parseSize(const std::string& text, RenderSettings& render) {
@@ -111,4 +111,4 @@ SceneInput readSceneInput(const std::string& input, const InputChoices& choices)
     return in;
 }
 
-}  // namespace eikon::app
+}  // namespace eikon
