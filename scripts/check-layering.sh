@@ -10,6 +10,7 @@
 #   include         the public headers (include/eikon/); include nothing of the project's but
 #                   each other, and every library may include them (eikon/error.h is the one
 #                   exception type)
+#   python          the Python module; the public API (include/) alone
 #   apps            the command line; may use every library but api (the command line links the
 #                   static libraries, not libeikon.so)
 #   shaders/shared  the math compiled both as GLSL and as C++; includes no other project folder,
@@ -42,6 +43,7 @@ declare -A MAY_INCLUDE=(
     [pipeline]="pipeline render sim core shaders/shared shaders include"
     [api]="api pipeline render sim core shaders/shared shaders include"
     [include]="include"
+    [python]="python include"
     [apps]="apps pipeline render sim core shaders/shared shaders include"
     [shaders/shared]="shaders/shared"
     [shaders]="shaders shaders/shared"
@@ -56,7 +58,7 @@ library_of() {
         shaders/test/*) lib=tests ;;
         shaders/shared/*) lib=shaders/shared ;;
         shaders/*) lib=shaders ;;
-        core/* | sim/* | render/* | pipeline/* | api/* | include/* | apps/* | tests/*)
+        core/* | sim/* | render/* | pipeline/* | api/* | include/* | python/* | apps/* | tests/*)
             lib="${1%%/*}" ;;
         *) lib="" ;;
     esac
@@ -89,7 +91,7 @@ violation() {
 
 # ---- includes -------------------------------------------------------------------------------
 mapfile -t files < <(
-    find core sim render pipeline api include apps -type f \( -name '*.h' -o -name '*.hpp' -o -name '*.cpp' \)
+    find core sim render pipeline api include python apps -type f \( -name '*.h' -o -name '*.hpp' -o -name '*.cpp' \)
     find shaders -path shaders/test -prune -o -type f \
         \( -name '*.h' -o -name '*.comp' -o -name '*.glsl' -o -name '*.vert' -o -name '*.frag' \) \
         -print
@@ -109,7 +111,7 @@ while IFS= read -r hit; do
     owner="$lib"
     if [ "$quote" = "<" ]; then
         # System headers are fine, except the GL ones below render.
-        if [[ "$owner" =~ ^(core|sim|shaders/shared|pipeline|api|include)$ && "$name" =~ $GL_HEADER ]]; then
+        if [[ "$owner" =~ ^(core|sim|shaders/shared|pipeline|api|include|python)$ && "$name" =~ $GL_HEADER ]]; then
             violation "$file:$line: $owner must not include <$name> ($owner may include:" \
                 "${MAY_INCLUDE[$owner]}; GL headers only in render, and GLFW in apps)"
         fi
@@ -147,6 +149,7 @@ declare -A MUST_NOT_LINK=(
     [render]='^eikon_sim$'
     [pipeline]='^eikon_api$|epoxy|egl|opengl|glfw|glew'
     [api]='epoxy|egl|opengl|glfw|glew'
+    [python]='^eikon_(core|sim|render|pipeline)$|epoxy|egl|opengl|glfw|glew'
     [apps]='^eikon_api$|epoxy|egl|opengl|glew'
 )
 declare -A MAY_LINK=(
@@ -155,9 +158,10 @@ declare -A MAY_LINK=(
     [render]="eikon_core, OpenGL/EGL/epoxy/GLFW"
     [pipeline]="eikon_sim, eikon_render and below, no OpenGL/EGL/epoxy/GLFW"
     [api]="eikon_pipeline and below, no OpenGL/EGL/epoxy/GLFW (they come inside eikon_render)"
+    [python]="eikon_api alone (the public API), no OpenGL/EGL/epoxy/GLFW"
     [apps]="every eikon library but eikon_api, and GLFW, no OpenGL/EGL/epoxy"
 )
-for owner in core sim render pipeline api apps; do
+for owner in core sim render pipeline api python apps; do
     cmake_file="$owner/CMakeLists.txt"
     [ -f "$cmake_file" ] || continue
     # Each find/link command as "line<TAB>arguments", joined over its continuation lines.

@@ -12,6 +12,8 @@ PACKAGES=(
     nlohmann-json3-dev libcli11-dev libpng-dev libopenexr-dev
     catch2
     python3-matplotlib  # scripts/plot_advection_bench.py (run with /usr/bin/python3)
+    pybind11-dev python3-dev python3-numpy python3-pytest python3-openvdb  # python/: `import eikon`,
+    # its pytest suite and the pyopenvdb interplay
     clang-format  # scripts/check-format.sh
     slurm-wlm munge  # tests/scripts/test_slurm_farm.sh: a one-node Slurm on 127.0.0.1
     # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes, and llvm-symbolizer for

@@ -31,6 +31,9 @@ using Vec3 = std::array<float, 3>;
 
 struct RenderedImage {
     int frame = 0;
+    // A render's or an EXR's rgb is linear radiance; a PNG read by readImage holds display
+    // values (srgb8 / 255) and is not linear.
+    bool linear = true;
     int width = 0;
     int height = 0;
     std::vector<float> rgb;            // linear radiance, 3 floats a pixel, row 0 at the top
@@ -73,6 +76,22 @@ struct Material {
     Vec3 emission{0.0f, 0.0f, 0.0f};
     float ior = 1.0f;
 };
+
+// How far an image is from its reference, as `eikon regress` measures it (docs/regress.md): over
+// RGB, linear when both are (PSNR's peak then the reference's largest value), else on the 8-bit
+// display values (peak 1); SSIM always on the luma of display values (a linear image through the
+// PNG writer's tone map). Throws eikon::Error when the sizes differ.
+struct ImageMetrics {
+    double rmse = 0.0;
+    double maxAbs = 0.0;
+    double meanRelative = 0.0;
+    double psnr = 0.0;  // dB; infinite for equal images
+    double ssim = 1.0;
+};
+ImageMetrics compareImages(const RenderedImage& test, const RenderedImage& reference);
+
+// Reads a PNG (display values, linear = false) or an EXR (linear), told apart by the extension.
+RenderedImage readImage(const std::string& path);
 
 class Session {
 public:

@@ -9,7 +9,7 @@ trap 'rm -rf "$WORK"' EXIT
 TREE="$WORK/tree"
 mkdir "$TREE" "$WORK/saved"
 # The folders the checks read; no build trees.
-cp -r "$REPO"/{core,sim,render,pipeline,api,include,apps,shaders,tests,CMakeLists.txt,.clang-format} \
+cp -r "$REPO"/{core,sim,render,pipeline,api,include,python,apps,shaders,tests,CMakeLists.txt,.clang-format} \
     "$TREE"/
 
 passed=0 failed=0

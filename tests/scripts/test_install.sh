@@ -4,6 +4,7 @@
 # Eikon::eikon), and run its Catch2 regression test, which renders through the installed
 # libeikon.so and compares with a committed hash. The shaders are read from the prefix
 # (EIKON_SHADER_DIR points there), as they are by a library installed far from its source tree.
+# Where the Python module was built, the installed one is imported from the prefix and renders.
 # Usage: tests/scripts/test_install.sh BUILD_DIR
 set -euo pipefail
 BUILD=$(realpath "$1")
@@ -23,3 +24,16 @@ cmake --build "$TMP/example" -j 2 > "$TMP/build.log" || { cat "$TMP/build.log"; 
 ldd "$TMP/example/render_regression_test" | grep -q "$TMP/prefix/.*libeikon.so" \
     || { echo "test_install: the example does not link the installed libeikon.so" >&2; exit 1; }
 EIKON_SHADER_DIR="$TMP/prefix/share/eikon/shaders" "$TMP/example/render_regression_test"
+
+if ls "$BUILD"/python/eikon*.so > /dev/null 2>&1; then
+    module=$(ls "$TMP"/prefix/lib*/python3*/dist-packages/eikon*.so)
+    ldd "$module" | grep -q "$TMP/prefix/.*libeikon.so" \
+        || { echo "test_install: the Python module does not find the installed libeikon.so" >&2; exit 1; }
+    PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c "
+import eikon, sys
+assert eikon.__file__.startswith('$TMP/prefix'), eikon.__file__
+s = eikon.Session.open('$ROOT/data/scenes/glass_sphere_fog.json', eikon.Device.CPU)
+s.set_image_size(16, 12)
+assert s.render(0).srgb8.sum() > 0
+print('installed Python module renders')"
+fi
