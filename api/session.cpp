@@ -1,5 +1,6 @@
 #include <filesystem>
 
+#include "api/rendered_image.h"
 #include "api/session_impl.h"
 #include "api/shader_location.h"
 #include "core/error.h"
@@ -99,16 +100,8 @@ void Session::stepTo(int frame) {
 RenderedImage Session::render(int frame) {
     const FrameInputs inputs = impl_->step(frame);
     const Image image = impl_->renderer->render(inputs);
-    RenderedImage out;
+    RenderedImage out = linearPartsOf(image);
     out.frame = frame;
-    out.width = image.width;
-    out.height = image.height;
-    out.rgb.resize(image.pixels.size() * 3);
-    out.transmittance.resize(image.pixels.size());
-    for (size_t i = 0; i < image.pixels.size(); ++i) {
-        for (int c = 0; c < 3; ++c) out.rgb[3 * i + size_t(c)] = image.pixels[i][c];
-        out.transmittance[i] = image.pixels[i].a;
-    }
     const RenderSettings& r = inputs.scene.render;
     out.exposure = r.exposure;
     out.toneCurve = r.toneCurve == ToneCurve::Filmic ? 1 : 0;

@@ -83,6 +83,11 @@ def test_camera_light_and_material_change_between_frames(tmp_path):
     session.set_material(fog)
     assert session.material("fog").absorption[0] == pytest.approx(0.8)
     assert np.array(session.render(0).transmittance).mean() < brighter.transmittance.mean()
+    session.set_image_size(12, 8)
+    smaller = session.render(0)
+    with pytest.raises(eikon.Error, match="differ in size"):
+        eikon.compare_images(smaller, first)
+    session.set_image_size(24, 16)
     camera = session.camera
     camera.horizontal_fov_degrees = 20.0
     session.camera = camera
