@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include <glm/vector_relational.hpp>
+
 #include "core/error.h"
 #include "render/gpu_timer.h"
 #include "render/input_key.h"
@@ -79,6 +81,25 @@ std::vector<unsigned char> transportInputsKey(const ViewSetup& setup,
     std::memcpy(key.data(), &p, sizeof(p));
     for (const DenseGrid* g : slotGrids) appendBytes(key, &g->version, sizeof(g->version));
     return key;
+}
+
+void appendReceiverMapsKey(const ViewSetup& setup, std::vector<unsigned char>& key) {
+    const shared::GpuViewParams& p = setup.params;
+    for (int r = 0; r < shared::receiverCount(p); ++r) {
+        appendBytes(key, &p.receivers[r].plane, sizeof(glm::vec4));
+        appendBytes(key, &p.receivers[r].texels, sizeof(glm::ivec4));
+    }
+}
+
+bool lightAllThroughFluence(const Scene& scene, ViewSetup& setup) {
+    bool scatters = false;
+    for (const MaterialSpec& mat : scene.materials)
+        scatters = scatters || glm::any(glm::greaterThan(mat.scattering, glm::vec3(0.0f)));
+    if (!scatters && scene.receivers.empty()) return false;
+    shared::GpuViewParams& p = setup.params;
+    for (size_t l = 0; l < scene.lights.size(); ++l) shared::setLightInFluence(p, int(l));
+    shared::setReadsFluence(p, shared::anyLightInFluence(p));
+    return true;
 }
 
 }  // namespace eikon

@@ -54,6 +54,13 @@ struct TransportStats {
     int64_t particlesTraced = 0;  // particles (photons) that entered the volume
     int64_t particlesCut = 0;     // particles cut before they finished (step cap, stop rule)
     int rounds = 0;               // rounds of the march that had particles to march
+    // Methods that refine their particles (wavefront patches): splits done, splits refused by the
+    // patch budget, particles ended where they tore (still too wide at the level cap), and
+    // particles removed at caustics.
+    int64_t particlesSplit = 0;
+    int64_t splitsRefused = 0;
+    int64_t particlesTorn = 0;
+    int64_t particlesRemoved = 0;
 };
 
 // Where the light of the last run went, per colour channel in power, for methods that account
@@ -162,5 +169,14 @@ private:
 // grids. A method appends what else its output depends on (its settings, the receivers' maps).
 std::vector<unsigned char> transportInputsKey(const ViewSetup& setup,
                                               const std::vector<const DenseGrid*>& slotGrids);
+
+// For methods whose particles stop on receivers and fill their maps: the receivers' planes and
+// map layouts, appended to a key.
+void appendReceiverMapsKey(const ViewSetup& setup, std::vector<unsigned char>& key);
+
+// What particle methods (photons, wavefronts) light: every light through the fluence, when some
+// material scatters light toward the camera or a receiver shows it (setLightInFluence,
+// setReadsFluence). Returns false, and sets nothing, when nothing would show their light.
+bool lightAllThroughFluence(const Scene& scene, ViewSetup& setup);
 
 }  // namespace eikon

@@ -15,6 +15,7 @@
 
 #include "core/dense_grid.h"
 #include "core/scene.h"
+#include "render/light_transport.h"
 #include "render/refraction_volume.h"
 #include "render/transport/photons/photon_tracing.h"
 #include "render/view_params.h"
@@ -39,6 +40,10 @@ struct PhotonVolumes {
     int64_t photonsCut = 0;     // cut at the step cap or by the stop rule (PhotonSettings)
     int rounds = 0;             // rounds of the march that had photons
 };
+
+// The output contract's view of smoothed volumes (fluence, direction, receiver map); empty when
+// nothing was computed. Shared by the particle methods that fill PhotonVolumes.
+TransportOutputCpu transportOutputOf(const PhotonVolumes& volumes);
 
 // CPU twin: traceLightPhotonsCpu, then smoothVolumeCpu of both volumes.
 PhotonVolumes computePhotonRadianceCpu(const ViewSetup& setup,

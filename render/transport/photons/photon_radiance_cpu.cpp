@@ -21,4 +21,15 @@ PhotonVolumes computePhotonRadianceCpu(const ViewSetup& setup,
     return out;
 }
 
+TransportOutputCpu transportOutputOf(const PhotonVolumes& volumes) {
+    TransportOutputCpu out;
+    if (volumes.radiance.empty()) return out;
+    out.fluence = volumes.radiance.data();
+    out.direction = volumes.direction.data();
+    out.fluenceVoxels = volumes.radiance.size();
+    out.receiverMap = volumes.receiverMap.data();
+    out.receiverTexels = volumes.receiverMap.size();
+    return out;
+}
+
 }  // namespace eikon

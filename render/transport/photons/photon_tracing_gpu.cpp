@@ -9,6 +9,7 @@
 #include "render/gpu_timer.h"
 #include "render/receiver_map.h"
 #include "render/shader_program.h"
+#include "render/transport/fixed_point.h"
 #include "render/transport/photons/photon_tracing_gpu.h"
 #include "render/volume_kernels_cpu.h"
 #include "render/volume_textures.h"
@@ -23,21 +24,6 @@ constexpr int kLocalSize = EK_ROUND_GROUP;
 constexpr int kDepositChannels = 6;  // r, g, b, weighted direction x, y, z
 // escaped rgb, extinguished rgb, dropped rgb, steps, cut, received rgb
 constexpr int kTotalsCount = 14;
-
-constexpr double kFixedPointRange =
-    1099511627776.0;  // 2^40, see render/transport/photons/photon_tracing.h
-
-double luminance(glm::dvec3 c) {
-    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
-}
-
-double scaleFor(double power, double length) {
-    return power > 0.0 ? kFixedPointRange / (power * length) : 0.0;
-}
-
-double fromFixed(int64_t q, double scale) {
-    return scale > 0.0 ? double(q) / scale : 0.0;
-}
 
 // An int64 the shader kept as two's complement (low, high) uint words.
 int64_t joinWords(const GLuint* words) {
@@ -183,11 +169,13 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     const glm::vec3 h = volume.volumeVoxelSize();
     const double smallestVoxel = double(std::min({h.x, h.y, h.z}));
     const glm::dvec3& emitted = host.totals.emitted;
-    host.fixedPointScale =
-        glm::dvec4(scaleFor(emitted.x, smallestVoxel), scaleFor(emitted.y, smallestVoxel),
-                   scaleFor(emitted.z, smallestVoxel), scaleFor(luminance(emitted), smallestVoxel));
-    const glm::dvec3 totalScale(scaleFor(emitted.x, 1.0), scaleFor(emitted.y, 1.0),
-                                scaleFor(emitted.z, 1.0));
+    host.fixedPointScale = glm::dvec4(fixedPointScaleFor(emitted.x, smallestVoxel),
+                                      fixedPointScaleFor(emitted.y, smallestVoxel),
+                                      fixedPointScaleFor(emitted.z, smallestVoxel),
+                                      fixedPointScaleFor(rec709Luminance(emitted), smallestVoxel));
+    const glm::dvec3 totalScale(fixedPointScaleFor(emitted.x, 1.0),
+                                fixedPointScaleFor(emitted.y, 1.0),
+                                fixedPointScaleFor(emitted.z, 1.0));
 
     // Step 5: the march in rounds (PhotonSettings::stepsPerRound). Round 0 covers every photon
     // by a direct dispatch; each later one only the photons the round before appended to its
@@ -252,7 +240,9 @@ std::vector<glm::vec4> PhotonTracerGpu::receiverMap() const {
     for (size_t i = 0; i < sums; ++i) fixed[i] = joinWords(&words[2 * i]);
     const glm::dvec3 e = host_.totals.emitted;
     return receiverMapFromFixed(
-        params_, fixed, glm::dvec3(scaleFor(e.x, 1.0), scaleFor(e.y, 1.0), scaleFor(e.z, 1.0)));
+        params_, fixed,
+        glm::dvec3(fixedPointScaleFor(e.x, 1.0), fixedPointScaleFor(e.y, 1.0),
+                   fixedPointScaleFor(e.z, 1.0)));
 }
 
 int64_t PhotonTracerGpu::stepsTaken() const {
@@ -274,18 +264,18 @@ PhotonResultCpu PhotonTracerGpu::download() const {
     r.photons = readBuffer<shared::GpuPhoton>(photons_, r.photons.size());
     const std::vector<GLuint> totals = readBuffer<GLuint>(totals_, kTotalsCount * 2);
     const glm::dvec4& scale = r.fixedPointScale;
-    const glm::dvec3 totalScale(scaleFor(r.totals.emitted.x, 1.0),
-                                scaleFor(r.totals.emitted.y, 1.0),
-                                scaleFor(r.totals.emitted.z, 1.0));
+    const glm::dvec3 totalScale(fixedPointScaleFor(r.totals.emitted.x, 1.0),
+                                fixedPointScaleFor(r.totals.emitted.y, 1.0),
+                                fixedPointScaleFor(r.totals.emitted.z, 1.0));
     for (int c = 0; c < 3; ++c) {
-        r.totals.escaped[c] = fromFixed(joinWords(&totals[2 * c]), totalScale[c]);
-        r.totals.extinguished[c] = fromFixed(joinWords(&totals[6 + 2 * c]), totalScale[c]);
-        r.totals.dropped[c] = fromFixed(joinWords(&totals[12 + 2 * c]), totalScale[c]);
+        r.totals.escaped[c] = fromFixedPoint(joinWords(&totals[2 * c]), totalScale[c]);
+        r.totals.extinguished[c] = fromFixedPoint(joinWords(&totals[6 + 2 * c]), totalScale[c]);
+        r.totals.dropped[c] = fromFixedPoint(joinWords(&totals[12 + 2 * c]), totalScale[c]);
     }
     r.steps = joinWords(&totals[18]);
     r.photonsCut = joinWords(&totals[20]);
     for (int c = 0; c < 3; ++c)
-        r.totals.received[c] = fromFixed(joinWords(&totals[22 + 2 * c]), totalScale[c]);
+        r.totals.received[c] = fromFixedPoint(joinWords(&totals[22 + 2 * c]), totalScale[c]);
     r.receiverMap = receiverMap();
     r.rounds = rounds();
 
@@ -295,8 +285,8 @@ PhotonResultCpu PhotonTracerGpu::download() const {
     for (size_t i = 0; i < voxels; ++i) {
         const GLuint* cell = &words[i * kDepositChannels * 2];
         for (int c = 0; c < 3; ++c) {
-            r.radiance[i][c] = float(fromFixed(joinWords(cell + 2 * c), scale[c]));
-            r.direction[i][c] = float(fromFixed(joinWords(cell + 6 + 2 * c), scale.w));
+            r.radiance[i][c] = float(fromFixedPoint(joinWords(cell + 2 * c), scale[c]));
+            r.direction[i][c] = float(fromFixedPoint(joinWords(cell + 6 + 2 * c), scale.w));
         }
     }
     return r;

@@ -17,12 +17,6 @@ constexpr std::int64_t kMaxPhotonsPerSide = 8192;
 // More steps per round than any step cap (16 crossings of an 8192-voxel box): one round.
 constexpr std::int64_t kMaxStepsPerRound = 1 << 20;
 
-bool sceneScatters(const Scene& scene) {
-    for (const MaterialSpec& mat : scene.materials)
-        if (glm::any(glm::greaterThan(mat.scattering, glm::vec3(0.0f)))) return true;
-    return false;
-}
-
 }  // namespace
 
 PhotonTransportSettings readPhotonTransportSettings(const json::Value* section) {
@@ -72,12 +66,9 @@ TransportNeeds PhotonTransport::needs() const {
 
 void PhotonTransport::configure(const Scene& scene, ViewSetup& setup) {
     seed_ = scene.render.seed;
-    // Photons matter where something scatters them toward the camera, or a receiver shows them.
-    if (!sceneScatters(scene) && scene.receivers.empty()) return;
-    shared::GpuViewParams& p = setup.params;
-    // Every light type emits photons (shaders/shared/photons.h).
-    for (size_t l = 0; l < scene.lights.size(); ++l) shared::setLightInFluence(p, int(l));
-    shared::setReadsFluence(p, shared::anyLightInFluence(p));
+    // Photons matter where something scatters them toward the camera, or a receiver shows them;
+    // every light type emits photons (shaders/shared/photons.h).
+    if (!lightAllThroughFluence(scene, setup)) return;
     // Every photon of every light is in memory at once (GPU records and their read-back).
     const PhotonPlan plan = planPhotons(setup, traceSettings());
     checkMemory(settings_.where.empty() ? scene.path + ":/render/light_transport" : settings_.where,
@@ -99,11 +90,7 @@ std::vector<unsigned char> PhotonTransport::cacheKey(
     const shared::GpuViewParams& p = setup.params;
     if (!shared::readsFluence(p)) return {};
     std::vector<unsigned char> key = transportInputsKey(setup, slotGrids);
-    // Photons stop on receivers and fill their maps.
-    for (int r = 0; r < shared::receiverCount(p); ++r) {
-        appendBytes(key, &p.receivers[r].plane, sizeof(glm::vec4));
-        appendBytes(key, &p.receivers[r].texels, sizeof(glm::ivec4));
-    }
+    appendReceiverMapsKey(setup, key);  // photons stop on receivers and fill their maps
     // Every member is 4 bytes: the struct has no padding to carry stale bytes into the key.
     static_assert(sizeof(PhotonSettings) == 9 * 4, "PhotonSettings gained padding or a member");
     const PhotonSettings trace = traceSettings();
@@ -125,14 +112,7 @@ void PhotonTransport::runGpu(const TransportInputsGpu& in) {
 }
 
 TransportOutputCpu PhotonTransport::outputCpu() const {
-    TransportOutputCpu out;
-    if (cpu_.radiance.empty()) return out;
-    out.fluence = cpu_.radiance.data();
-    out.direction = cpu_.direction.data();
-    out.fluenceVoxels = cpu_.radiance.size();
-    out.receiverMap = cpu_.receiverMap.data();
-    out.receiverTexels = cpu_.receiverMap.size();
-    return out;
+    return transportOutputOf(cpu_);
 }
 
 void PhotonTransport::bindGpu() const {
