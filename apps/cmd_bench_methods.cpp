@@ -37,8 +37,9 @@ namespace {
 struct BenchMethodsOptions {
     int resolution = 63;
     int reps = 3;
-    std::string methods;  // comma-separated; empty: every registered method
-    std::string cases;    // comma-separated; empty: every case
+    std::string methods;   // comma-separated; empty: every registered method
+    std::string cases;     // comma-separated; empty: every case
+    std::string settings;  // comma-separated setting names; empty: every named setting
     int threads = 0;
     bool quick = false;
     std::string tsv = "out/bench/methods.tsv";
@@ -116,6 +117,17 @@ int runBenchMethods(BenchMethodsOptions o) {
     for (const LightTransportMethod& m : lightTransportMethods())
         if (wanted.empty() || std::find(wanted.begin(), wanted.end(), m.name) != wanted.end())
             methods.push_back(&m);
+    const std::vector<std::string> settings = splitList(o.settings);
+    auto settingWanted = [&](const std::string& name) {
+        return settings.empty() ||
+               std::find(settings.begin(), settings.end(), name) != settings.end();
+    };
+    for (const std::string& name : settings) {
+        bool known = false;
+        for (const LightTransportMethod* m : methods)
+            for (const auto& named : m->benchSettings) known |= named.first == name;
+        if (!known) throw Error("--settings", "no method benched has a setting '" + name + "'");
+    }
 
     std::printf("# eikon bench methods: error against ms of every light-transport method\n");
     printBenchHeader(stdout, o.threads);
@@ -129,7 +141,8 @@ int runBenchMethods(BenchMethodsOptions o) {
                     c.errorUnit.c_str());
     for (const LightTransportMethod* m : methods)
         for (const auto& [name, json] : m->benchSettings)
-            std::printf("# setting %s %s: %s\n", m->name.c_str(), name.c_str(), json.c_str());
+            if (settingWanted(name))
+                std::printf("# setting %s %s: %s\n", m->name.c_str(), name.c_str(), json.c_str());
 
     if (fs::path(o.tsv).has_parent_path()) fs::create_directories(fs::path(o.tsv).parent_path());
     std::ofstream tsv(o.tsv);
@@ -140,6 +153,7 @@ int runBenchMethods(BenchMethodsOptions o) {
     for (const MethodCase& c : cases)
         for (const LightTransportMethod* m : methods)
             for (const auto& [setting, json] : m->benchSettings) {
+                if (!settingWanted(setting)) continue;
                 const Measurement r = measure(c, m->name, json, o.reps);
                 if (!r.active) {
                     std::printf("%-10s %-14s %-8s | %10s | (computes nothing for this scene)\n",
@@ -183,6 +197,9 @@ void addBenchMethodsCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--cases", o->cases,
                     "comma-separated: slab, ball_lens, luneburg, linear_n2, grin, caustic, "
                     "caustic_box, energy (default all)");
+    cmd->add_option("--settings", o->settings,
+                    "comma-separated setting names, e.g. default,fine (default: every method's "
+                    "named settings)");
     cmd->add_option("--threads", o->threads, "cap TBB's threads (default: all cores)");
     cmd->add_flag("--quick", o->quick, "a small run, to check that it works: 49^3, one run");
     cmd->add_option("--tsv", o->tsv, "TSV output (default out/bench/methods.tsv)");

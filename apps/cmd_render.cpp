@@ -151,6 +151,14 @@ void printTransportStats(const FrameRenderer& renderer, const std::vector<StageT
         last.particlesTraced > 0 ? double(steps) / double(last.particlesTraced) : 0.0,
         ms > 0.0 ? double(steps) / (ms * 1e3) : 0.0, static_cast<long long>(last.particlesCut),
         last.rounds);
+    if (last.particlesSplit > 0 || last.splitsRefused > 0 || last.particlesTorn > 0 ||
+        last.particlesRemoved > 0)
+        std::printf(
+            "  %s: %lld split, %lld refused a split (patch budget), %lld torn, %lld removed "
+            "at caustics\n",
+            method.c_str(), static_cast<long long>(last.particlesSplit),
+            static_cast<long long>(last.splitsRefused), static_cast<long long>(last.particlesTorn),
+            static_cast<long long>(last.particlesRemoved));
 }
 
 // The frame's counters for --stats-json: what the light-transport method traced (nothing when it
@@ -167,6 +175,13 @@ FrameCounters frameCounters(const FrameRenderer& renderer, int64_t stepsBefore) 
         c["particle_steps"] = double(steps);
         c["particles_cut"] = double(last.particlesCut);
         c["transport_rounds"] = last.rounds;
+        if (last.particlesSplit > 0 || last.splitsRefused > 0 || last.particlesTorn > 0 ||
+            last.particlesRemoved > 0) {
+            c["particles_split"] = double(last.particlesSplit);
+            c["splits_refused"] = double(last.splitsRefused);
+            c["particles_torn"] = double(last.particlesTorn);
+            c["particles_removed"] = double(last.particlesRemoved);
+        }
     }
     return c;
 }

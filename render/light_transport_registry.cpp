@@ -4,6 +4,7 @@
 
 #include "render/transport/light_volumes/light_volume_transport.h"
 #include "render/transport/photons/photon_transport.h"
+#include "render/transport/wavefront/wavefront_transport.h"
 
 namespace eikon {
 namespace {
@@ -87,6 +88,19 @@ const std::vector<LightTransportMethod>& lightTransportMethods() {
          {{"coarse", R"({"shadows": "volume", "shadow_step_voxels": 6})"},
           {"default", "{}"},
           {"fine", R"({"shadows": "volume", "shadow_step_voxels": 1})"}}},
+        {"wavefront",
+         "Ihrke et al. 2007: wavefront patches advance in equal optical time steps, split past a "
+         "voxel and carry power (curved light, caustics by the intensity law, no noise); CPU twin "
+         "only so far",
+         [](const json::Value* s, const TransportDevice& d) {
+             return make<WavefrontTransport>(readWavefrontTransportSettings(s), d);
+         },
+         {{"coarse", R"({"split_voxels": 2})"},
+          {"default", "{}"},
+          {"fine", R"({"step_voxels": 0.5})"},
+          {"paper", R"({"at_caustic": "remove", "deposit_samples": 1})"},
+          {"midpoint", R"({"integrator": "midpoint"})"},
+          {"euler", R"({"integrator": "euler"})"}}},
     };
     return methods;
 }

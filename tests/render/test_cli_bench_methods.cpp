@@ -51,19 +51,22 @@ TEST_CASE("eikon bench methods --quick measures every method against the closed 
           "[cli][bench][light_transport]") {
     const std::string dir = scratchDir("cli_bench_methods");
     const std::string tsv = dir + "/methods.tsv";
-    const auto r = runEikon("bench methods --quick --tsv " + quoted(tsv), dir);
+    // The wavefront (ten times the others' time) has its own test below.
+    const auto r =
+        runEikon("bench methods --quick --methods photons,light_volumes --tsv " + quoted(tsv), dir);
     INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
     REQUIRE(r.exitCode == 0);
     const std::map<std::string, double> e = readErrors(tsv);
 
-    // Every registered method, every named setting, every case: a method added later is here.
+    // Every named setting, every case.
     for (const eikon::LightTransportMethod& m : eikon::lightTransportMethods())
-        for (const auto& [setting, json] : m.benchSettings)
-            for (const char* c : {"slab", "ball_lens", "luneburg", "linear_n2", "grin", "caustic",
-                                  "caustic_box", "energy"}) {
-                INFO(c << " " << m.name << " " << setting);
-                CHECK(e.count(std::string(c) + " " + m.name + " " + setting) == 1);
-            }
+        if (m.name != "wavefront")
+            for (const auto& [setting, json] : m.benchSettings)
+                for (const char* c : {"slab", "ball_lens", "luneburg", "linear_n2", "grin",
+                                      "caustic", "caustic_box", "energy"}) {
+                    INFO(c << " " << m.name << " " << setting);
+                    CHECK(e.count(std::string(c) + " " + m.name + " " + setting) == 1);
+                }
 
     for (const char* setting : {"coarse", "default", "fine"}) {
         INFO(setting);
@@ -106,6 +109,65 @@ TEST_CASE("eikon bench methods --quick measures every method against the closed 
         CHECK(e.at("caustic_box photons" + s) < 0.3);
         CHECK(e.at("slab photons" + s) < 0.13);
     }
+}
+
+TEST_CASE("eikon bench methods --quick: the wavefront method against the closed forms",
+          "[cli][bench][wavefront]") {
+    const std::string dir = scratchDir("cli_bench_methods_wavefront");
+    const std::string tsv = dir + "/methods.tsv";
+    // The settings that differ in what is modelled; fine (half the step) and the other
+    // integrators are in BENCHMARKS.md.
+    const auto r = runEikon(
+        "bench methods --quick --methods wavefront --settings coarse,default,paper --tsv " +
+            quoted(tsv),
+        dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+    const std::map<std::string, double> e = readErrors(tsv);
+    for (const std::string setting : {"coarse", "default", "paper"}) {
+        INFO(setting);
+        const std::string s = " wavefront " + setting;
+        // Foci and bent exits within 1.5 voxels (0.03 to 0.65 measured at 49³), except the
+        // paper's rule on the ball lens: removing the patches that cross the focus darkens the
+        // axis below it and moves the brightest point (1.9 voxels measured).
+        if (setting != "paper") CHECK(e.at("ball_lens" + s) < 1.5);
+        CHECK(e.at("luneburg" + s) < 1.5);
+        CHECK(e.at("linear_n2" + s) < 1.5);
+        CHECK(e.at("grin" + s) < 1.5);
+        // The account balances to rounding whatever is dropped, torn or removed.
+        CHECK(e.at("energy" + s) < 1e-6);
+        if (setting == "paper") {
+            // One chord per patch aliases (40 %), and removed patches leave the caustic's rings
+            // dark (68 %): what the deposit grid and "keep" fix, measured.
+            CHECK(e.at("slab" + s) > 0.2);
+            CHECK(e.at("caustic" + s) > 0.4);
+        } else {
+            CHECK(e.at("slab" + s) < 0.13);    // 7.7 % measured
+            CHECK(e.at("caustic" + s) < 0.3);  // 15 to 22 % measured
+            CHECK(e.at("caustic_box" + s) < 0.3);
+        }
+    }
+}
+
+TEST_CASE("eikon bench methods: every registered method, every named setting, has its row",
+          "[cli][bench][light_transport]") {
+    // Two cheap cases at 25³: a method added later shows up here.
+    const std::string dir = scratchDir("cli_bench_methods_rows");
+    const std::string tsv = dir + "/methods.tsv";
+    const auto r = runEikon(
+        "bench methods --resolution 25 --reps 1 --cases slab,linear_n2 --tsv " + quoted(tsv), dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+    const std::map<std::string, double> e = readErrors(tsv);
+    for (const eikon::LightTransportMethod& m : eikon::lightTransportMethods())
+        for (const auto& [setting, json] : m.benchSettings)
+            for (const char* c : {"slab", "linear_n2"}) {
+                INFO(c << " " << m.name << " " << setting);
+                CHECK(e.count(std::string(c) + " " + m.name + " " + setting) == 1);
+            }
+    const auto bad = runEikon("bench methods --quick --settings finest", dir);
+    CHECK(bad.exitCode == 1);
+    CHECK(bad.err.find("--settings") != std::string::npos);
 }
 
 TEST_CASE("eikon bench integrators --quick: RK4 beats the paper's Euler tenfold, photon by photon",

@@ -12,6 +12,7 @@
 #include "render/light_transport_registry.h"
 #include "render/transport/light_volumes/light_volume_transport.h"
 #include "render/transport/photons/photon_transport.h"
+#include "render/transport/wavefront/wavefront_transport.h"
 #include "support/light_transport_setup.h"
 
 using Catch::Matchers::Contains;
@@ -218,6 +219,83 @@ TEST_CASE("a method's cache key follows its own settings", "[light_transport]") 
     volumes.render({0, nextVolumes});
     CHECK(volumes.transportRuns("light_volumes") == 3);
     CHECK(volumes.transportRuns("photons") == 0);
+}
+
+TEST_CASE(
+    "the wavefront method's settings: errors at the pointer, each in its cache key, no GPU "
+    "run yet",
+    "[light_transport][wavefront]") {
+    SECTION("defaults are the trace's") {
+        const eikon::WavefrontTransportSettings d = eikon::readWavefrontTransportSettings(nullptr);
+        const eikon::WavefrontSettings trace;
+        CHECK(d.trace.patchesPerSide == trace.patchesPerSide);
+        CHECK(d.trace.atCaustic == EK_WAVEFRONT_KEEP);
+        CHECK(d.trace.depositSamples == 2);
+        CHECK(d.trace.integrator == eikon::WavefrontIntegrator::Rk4);
+    }
+    SECTION("errors") {
+        const Failure f =
+            failureOf(glassInFog(R"("light_transport": {"wavefront": {"split_voxel": 1}})"));
+        CHECK(f.where == "glass.json:/render/light_transport/wavefront/split_voxel");
+        CHECK_THAT(f.reason, Contains("did you mean 'split_voxels'?"));
+        const Failure c =
+            failureOf(glassInFog(R"("light_transport": {"wavefront": {"at_caustic": "drop"}})"));
+        CHECK(c.where == "glass.json:/render/light_transport/wavefront/at_caustic");
+        CHECK_THAT(c.reason, Contains("\"remove\""));
+        for (const char* bad :
+             {R"({"per_side": 0})", R"({"step_voxels": 0})", R"({"max_level": 13})",
+              R"({"max_patches": 0})", R"({"deposit_samples": 9})", R"({"flux_threshold": 1})",
+              R"({"integrator": "verlet"})"}) {
+            INFO(bad);
+            const Failure b = failureOf(
+                glassInFog(std::string(R"("light_transport": {"wavefront": )") + bad + "}"));
+            CHECK(b.where.rfind("glass.json:/render/light_transport/wavefront/", 0) == 0);
+        }
+    }
+    SECTION("every setting reruns it; other methods' settings do not") {
+        Scene base = parse(glassInFog(""));
+        eikon::test::setTransportMethod(base, "wavefront");
+        eikon::test::setTransportSetting(base, "wavefront", "per_side", 8);
+        eikon::FrameRenderer renderer(base, eikon::Backend::Cpu);
+        renderer.render(0);
+        REQUIRE(renderer.transportRuns("wavefront") == 1);
+        renderer.render(0);
+        CHECK(renderer.transportRuns("wavefront") == 1);
+        int runs = 1;
+        Scene next = renderer.scene();
+        for (const auto& [key, value] :
+             std::vector<std::pair<std::string, double>>{{"per_side", 10},
+                                                         {"step_voxels", 1.5},
+                                                         {"split_voxels", 2},
+                                                         {"max_level", 4},
+                                                         {"max_patches", 1000},
+                                                         {"flux_threshold", 1e-3},
+                                                         {"deposit_samples", 1}}) {
+            INFO(key);
+            eikon::test::setTransportSetting(next, "wavefront", key, value);
+            renderer.render({0, next});
+            CHECK(renderer.transportRuns("wavefront") == ++runs);
+        }
+        eikon::patchLightTransport(next, R"({"wavefront": {"at_caustic": "remove"}})");
+        renderer.render({0, next});
+        CHECK(renderer.transportRuns("wavefront") == ++runs);
+        eikon::patchLightTransport(next, R"({"wavefront": {"integrator": "euler"}})");
+        renderer.render({0, next});
+        CHECK(renderer.transportRuns("wavefront") == ++runs);
+        eikon::test::setPhotonSetting(next, "per_side", 20);
+        renderer.render({0, next});
+        CHECK(renderer.transportRuns("wavefront") == runs);
+    }
+    SECTION("a GPU run says, in one line, that it runs on the CPU twin only so far") {
+        Scene scene = parse(glassInFog(""));
+        eikon::test::setTransportMethod(scene, "wavefront");
+        try {
+            eikon::FrameRenderer(scene, eikon::Backend::Gpu).render(0);
+            FAIL("no error");
+        } catch (const eikon::Error& e) {
+            CHECK_THAT(std::string(e.what()), Contains("--backend cpu"));
+        }
+    }
 }
 
 // Every registered method, run on the CPU twin, fills the output contract the view pass reads:

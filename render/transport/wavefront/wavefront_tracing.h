@@ -1,0 +1,95 @@
+#pragma once
+// Eikonal wavefront tracing (Ihrke et al. 2007; docs: shaders/shared/wavefront.h): the CPU
+// twin, parallel over each light's starting patches with TBB, every patch's descendants traced
+// depth first on one thread with a stack of at most 3 · maxLevel + 1 patches.
+//
+// Output (x fastest, like DenseGrid), the photons' units (render/transport/photons/
+// photon_tracing.h): radiance rgb = Σ power·length per voxel, direction xyz = Σ luminance of that
+// × the chord's unit direction; summed in fixed point (the photons' rule), so any thread count
+// and any order of patches give the same bits. Every (patch, step) is computed the same whatever
+// the order, which a breadth-first GPU list of patches can reproduce.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/dense_grid.h"
+#include "render/refraction_volume.h"
+#include "render/transport/photons/photon_tracing.h"
+#include "render/view_params.h"
+
+EK_NAMESPACE_BEGIN
+#define EK_WAVEFRONT_TYPES_ONLY
+#include "shaders/shared/wavefront.h"
+#undef EK_WAVEFRONT_TYPES_ONLY
+EK_NAMESPACE_END
+
+namespace eikon {
+
+enum class WavefrontIntegrator : int { Euler = 0, Midpoint = 1, Rk4 = 2 };
+
+// Every member is 4 bytes: the cache key takes the struct's bytes.
+struct WavefrontSettings {
+    int patchesPerSide = 64;   // N: N×N starting patches per light-space grid (as photons)
+    float stepVoxels = 1.0f;   // Δt, in optical voxel lengths of the smallest edge
+    float splitVoxels = 1.0f;  // split a patch spanning more voxels than this along an axis
+    int maxLevel = 8;  // split levels; a patch still too wide there has torn (EK_PATCH_TORN)
+    // All patches of a frame, at most: each starting patch may make maxPatches / starting patches
+    // (so the cap does not depend on thread timing); past it patches go on unsplit.
+    int maxPatches = 1 << 22;
+    float fluxThreshold = 1e-4f;  // drop a patch below this fraction of its initial power
+    int maxSteps = 0;             // per patch; 0: 16 crossings of the volume at Δt
+    int atCaustic = 0;            // EK_WAVEFRONT_KEEP or EK_WAVEFRONT_REMOVE
+    // Chords per side a patch's step is deposited along (depositPatchStep); 1: the paper's
+    // midpoint.
+    int depositSamples = 2;
+    WavefrontIntegrator integrator = WavefrontIntegrator::Rk4;
+};
+
+struct WavefrontResultCpu {
+    glm::ivec3 resolution{0};
+    std::vector<glm::vec4> radiance;     // rgb: Σ power·length; w: 0
+    std::vector<glm::vec4> direction;    // xyz: Σ luminance(power·length) × unit direction
+    std::vector<glm::vec4> receiverMap;  // irradiance per receiver texel (render/receiver_map.h)
+    PhotonTotals totals;                 // removed, torn and cut patches' power counts as dropped
+    glm::dvec4 fixedPointScale{0.0};
+    int64_t steps = 0;             // patch steps, all patches
+    int64_t startingPatches = 0;   // active starting patches (their rays reach the box)
+    int64_t patchesTraced = 0;     // starting patches and every child made by a split
+    int64_t patchesSplit = 0;      // splits done
+    int64_t splitsRefused = 0;     // patches refused a split by the patch budget (go on unsplit)
+    int64_t patchesTorn = 0;       // ended at the level cap still too wide (EK_PATCH_TORN)
+    int64_t patchesRemoved = 0;    // removed at a caustic (atCaustic = remove)
+    int64_t causticCrossings = 0;  // orientation flips seen (kept or removed)
+    int64_t patchesCut = 0;        // still active at maxSteps; power counts as dropped
+    int maxLevelReached = 0;
+    // Every patch's final state in the order it ended on its starting patch's thread: for
+    // tests that follow the wavefront (empty unless keepPatches).
+    std::vector<shared::GpuWavefrontPatch> patches;
+};
+
+struct WavefrontPlan {
+    glm::ivec3 resolution{0};
+    int side = 1;
+    std::vector<PhotonLightPlan> lights;  // photons' layouts: the same grids, patches for cells
+    size_t patches = 0;                   // starting patches, all lights
+    float dt = 0.0f;                      // the optical time step, in scene units
+    int maxSteps = 0;
+};
+WavefrontPlan planWavefronts(const ViewSetup& setup, const WavefrontSettings& settings);
+
+// The starting patches of every light, light after light in index order (inactive ones too).
+std::vector<shared::GpuWavefrontPatch> generatePatchesCpu(const ViewSetup& setup,
+                                                          const RefractionVolumeCpu& gradient,
+                                                          const WavefrontSettings& settings = {});
+
+// Traces every light's wavefront through the media (slotGrids: the field volumes; gradient: the
+// ∇n volume). keepPatches: also return every final patch (tests).
+WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
+                                      const std::vector<const DenseGrid*>& slotGrids,
+                                      const RefractionVolumeCpu& gradient,
+                                      const WavefrontSettings& settings = {},
+                                      bool keepPatches = false);
+
+}  // namespace eikon

@@ -1,0 +1,57 @@
+#pragma once
+// Light transport method "wavefront": Ihrke et al. 2007's eikonal wavefront tracing. Each light's
+// wavefront, a mesh of patches with four particles each, advances in equal optical time steps
+// through the ∇n volume; patches split where they grow past a voxel and carry power, so the
+// intensity law E = Φ/A holds without noise; their centroids' chords fill the output contract's
+// fluence and mean-direction volumes (render/transport/wavefront/wavefront_tracing.h).
+//
+// Settings: render.light_transport.wavefront (docs/scene-format.md#renderlight_transportwavefront).
+// CPU twin only for now: a GPU run says so in one line (docs/methods.md).
+#include <string>
+
+#include "core/json_reader.h"
+#include "render/light_transport.h"
+#include "render/transport/photons/photon_radiance.h"
+#include "render/transport/wavefront/wavefront_tracing.h"
+
+namespace eikon {
+
+struct WavefrontTransportSettings {
+    WavefrontSettings trace;
+    std::string where;  // the section's file and JSON pointer, for messages
+};
+
+// The settings section; null: all defaults. Throws eikon::Error at the offending key.
+WavefrontTransportSettings readWavefrontTransportSettings(const json::Value* section);
+
+// The patch integrator names of the settings ("euler", "midpoint", "rk4").
+const std::vector<std::string>& wavefrontIntegratorNames();
+
+class WavefrontTransport final : public LightTransport {
+public:
+    WavefrontTransport(WavefrontTransportSettings settings, TransportDevice device);
+
+    std::string name() const override { return "wavefront"; }
+    TransportNeeds needs() const override;
+    void configure(const Scene& scene, ViewSetup& setup) override;
+    std::vector<unsigned char> cacheKey(
+        const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const override;
+    void runCpu(const TransportInputsCpu& in) override;
+    void runGpu(const TransportInputsGpu& in) override;
+    TransportOutputCpu outputCpu() const override;
+    void bindGpu() const override {}
+    TransportStats stats() const override { return stats_; }
+    std::vector<std::string> stages() const override { return {"wavefront", "smooth"}; }
+    std::optional<EnergyBalance> energy() const override;
+
+    // The smoothed volumes and totals of the last run, for tests.
+    const PhotonVolumes& volumes() const { return cpu_; }
+
+private:
+    WavefrontTransportSettings settings_;
+    TransportDevice device_;
+    PhotonVolumes cpu_;
+    TransportStats stats_;
+};
+
+}  // namespace eikon
