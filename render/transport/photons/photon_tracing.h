@@ -111,6 +111,11 @@ struct PhotonPlan {
 };
 PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings);
 
+// Every light's layout of N×N grids (side N), decided by the shared photonGrid once on the host,
+// with each light's particles numbered on from the last's; `particles` gets the total. Shared by
+// the photon and wavefront plans (one patch per cell).
+std::vector<PhotonLightPlan> planLightGrids(const ViewSetup& setup, int side, size_t& particles);
+
 // Steps every active photon takes in round `round` (from 0) of plan: stepsPerRound, less in a
 // last round that reaches maxSteps. Every photon still active after a round has taken all of its
 // steps, so all of them have taken the same number and the step cap is one count for all.

@@ -13,25 +13,32 @@
 
 namespace eikon {
 
+std::vector<PhotonLightPlan> planLightGrids(const ViewSetup& setup, int side, size_t& particles) {
+    // The layouts come from the shared code, run here once: the GPU is told them rather than
+    // deciding again, so that a last-bit difference can never change a particle count.
+    shared::PhotonKernelCpu kernel{{setup.params}};
+    const size_t perGrid = size_t(side) * size_t(side);
+    std::vector<PhotonLightPlan> lights;
+    particles = 0;
+    for (int l = 0; l < shared::lightCount(setup.params); ++l) {
+        PhotonLightPlan light;
+        light.light = l;
+        light.grid = kernel.photonGrid(l);
+        light.first = particles;
+        light.count = size_t(kernel.photonGridFaces(light.grid)) * perGrid;
+        particles += light.count;
+        lights.push_back(light);
+    }
+    return lights;
+}
+
 PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings) {
     PhotonPlan plan;
     plan.resolution = glm::ivec3(setup.params.resolution);
     const glm::ivec3 res = plan.resolution;
     plan.voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
     plan.side = std::max(settings.photonsPerSide, 1);
-    // The layouts come from the shared code, run here once: the GPU is told them rather than
-    // deciding again, so that a last-bit difference can never change a photon count.
-    shared::PhotonKernelCpu kernel{{setup.params}};
-    const size_t perGrid = size_t(plan.side) * size_t(plan.side);
-    for (int l = 0; l < shared::lightCount(setup.params); ++l) {
-        PhotonLightPlan light;
-        light.light = l;
-        light.grid = kernel.photonGrid(l);
-        light.first = plan.photons;
-        light.count = size_t(kernel.photonGridFaces(light.grid)) * perGrid;
-        plan.photons += light.count;
-        plan.lights.push_back(light);
-    }
+    plan.lights = planLightGrids(setup, plan.side, plan.photons);
     plan.minStep = octreeStepInScene(setup, settings.minStepVoxels);
     // By default a photon may cross the volume 16 times at the minimum step (a trapped path).
     plan.maxSteps = settings.maxSteps > 0 ? settings.maxSteps

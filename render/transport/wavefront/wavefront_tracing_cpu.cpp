@@ -50,18 +50,9 @@ WavefrontPlan planWavefronts(const ViewSetup& setup, const WavefrontSettings& se
     plan.resolution = glm::ivec3(setup.params.resolution);
     const glm::ivec3 res = plan.resolution;
     plan.side = std::max(settings.patchesPerSide, 1);
-    // The photons' layouts, decided once on the host (photons.h photonGrid).
+    // The photons' layouts, one patch per cell.
+    plan.lights = planLightGrids(setup, plan.side, plan.patches);
     shared::WavefrontKernelCpu kernel{{{setup.params}}};
-    const size_t perGrid = size_t(plan.side) * size_t(plan.side);
-    for (int l = 0; l < shared::lightCount(setup.params); ++l) {
-        PhotonLightPlan light;
-        light.light = l;
-        light.grid = kernel.photonGrid(l);
-        light.first = plan.patches;
-        light.count = size_t(kernel.photonGridFaces(light.grid)) * perGrid;
-        plan.patches += light.count;
-        plan.lights.push_back(light);
-    }
     const glm::vec3 h = kernel.volumeVoxelSize();
     const float stepVoxels = std::max(settings.stepVoxels, 1e-3f);
     plan.dt = stepVoxels * std::min({h.x, h.y, h.z});
