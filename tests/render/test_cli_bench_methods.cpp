@@ -111,8 +111,9 @@ TEST_CASE("eikon bench methods --quick measures every method against the closed 
     }
 }
 
+// Release only: the 25³ rows test below runs the same code under the sanitizers.
 TEST_CASE("eikon bench methods --quick: the wavefront method against the closed forms",
-          "[cli][bench][wavefront]") {
+          "[cli][bench][wavefront][release_only]") {
     const std::string dir = scratchDir("cli_bench_methods_wavefront");
     const std::string tsv = dir + "/methods.tsv";
     // The settings that differ in what is modelled; fine (half the step) and the other
