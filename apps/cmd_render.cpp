@@ -131,6 +131,11 @@ void printStats(const std::vector<StageTime>& stages, double writeMs, bool softw
             " read ~0, the cpu column is the cost)\n");
 }
 
+// Energy figures are reported summed over the colour channels.
+double channelSum(glm::dvec3 v) {
+    return v.x + v.y + v.z;
+}
+
 // The light-transport method's particles traced this frame (photons), their steps and steps per
 // second of the stage named after the method's particles (the larger of its GPU and CPU columns:
 // hardware GPUs run the trace after the call returns, while llvmpipe runs it inside the GL calls
@@ -159,6 +164,18 @@ void printTransportStats(const FrameRenderer& renderer, const std::vector<StageT
             method.c_str(), static_cast<long long>(last.particlesSplit),
             static_cast<long long>(last.splitsRefused), static_cast<long long>(last.particlesTorn),
             static_cast<long long>(last.particlesRemoved));
+    if (const std::optional<EnergyBalance> e = renderer.lightTransport().energy()) {
+        // Shares of the power that entered the volume.
+        const auto sum = channelSum;
+        const double in = std::max(sum(e->emitted), 1e-300);
+        const double rest = sum(e->extinguished + e->escaped + e->received + e->dropped);
+        std::printf(
+            "  %s energy: emitted %.6g; extinguished %.4f, escaped %.4f, received %.4f, dropped "
+            "%.4f (removed at caustics %.4f); unaccounted %.2e\n",
+            method.c_str(), sum(e->emitted), sum(e->extinguished) / in, sum(e->escaped) / in,
+            sum(e->received) / in, sum(e->dropped) / in, sum(e->removed) / in,
+            (sum(e->emitted) - rest) / in);
+    }
 }
 
 // The frame's counters for --stats-json: what the light-transport method traced (nothing when it
@@ -181,6 +198,15 @@ FrameCounters frameCounters(const FrameRenderer& renderer, int64_t stepsBefore) 
             c["splits_refused"] = double(last.splitsRefused);
             c["particles_torn"] = double(last.particlesTorn);
             c["particles_removed"] = double(last.particlesRemoved);
+        }
+        if (const std::optional<EnergyBalance> e = renderer.lightTransport().energy()) {
+            const auto sum = channelSum;
+            c["energy_emitted"] = sum(e->emitted);
+            c["energy_extinguished"] = sum(e->extinguished);
+            c["energy_escaped"] = sum(e->escaped);
+            c["energy_received"] = sum(e->received);
+            c["energy_dropped"] = sum(e->dropped);
+            c["energy_removed"] = sum(e->removed);
         }
     }
     return c;

@@ -72,6 +72,7 @@ struct EnergyBalance {
     glm::dvec3 escaped{0.0};       // left through the volume's faces
     glm::dvec3 dropped{0.0};       // in particles removed below a threshold or cut
     glm::dvec3 received{0.0};      // stopped on a receiver
+    glm::dvec3 removed{0.0};       // of dropped: removed at caustics (the wavefront's rule)
 };
 
 // The output contract on the CPU: views into the method's own storage, valid until its next run.

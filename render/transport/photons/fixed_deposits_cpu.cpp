@@ -48,12 +48,19 @@ void FixedDepositsCpu::finish(int state, glm::vec3 left, glm::vec3 lost, bool pa
     }
 }
 
+void FixedDepositsCpu::addRemoved(glm::vec3 power) {
+    for (int c = 0; c < 3; ++c)
+        totals_.removed[c].fetch_add(shared::PhotonKernelCpu::toFixed(power[c], totalScale_[c]),
+                                     std::memory_order_relaxed);
+}
+
 void FixedDepositsCpu::readTotals(PhotonTotals& totals) const {
     for (int c = 0; c < 3; ++c) {
         totals.escaped[c] = fromFixedPoint(totals_.escaped[c].load(), totalScale_[c]);
         totals.extinguished[c] = fromFixedPoint(totals_.extinguished[c].load(), totalScale_[c]);
         totals.dropped[c] = fromFixedPoint(totals_.dropped[c].load(), totalScale_[c]);
         totals.received[c] = fromFixedPoint(totals_.received[c].load(), totalScale_[c]);
+        totals.removed[c] = fromFixedPoint(totals_.removed[c].load(), totalScale_[c]);
     }
 }
 

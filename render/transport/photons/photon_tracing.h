@@ -65,6 +65,7 @@ struct PhotonTotals {
     glm::dvec3 extinguished{0.0};  // lost to e^(−κΔ): absorbed or scattered out
     glm::dvec3 dropped{0.0};       // left in photons removed below the threshold or cut
     glm::dvec3 received{0.0};      // carried onto a receiver (front or back face)
+    glm::dvec3 removed{0.0};       // of dropped: wavefront patches removed at caustics
 };
 
 struct PhotonResultCpu {

@@ -52,7 +52,7 @@ struct WavefrontResultCpu {
     std::vector<glm::vec4> radiance;     // rgb: Σ power·length; w: 0
     std::vector<glm::vec4> direction;    // xyz: Σ luminance(power·length) × unit direction
     std::vector<glm::vec4> receiverMap;  // irradiance per receiver texel (render/receiver_map.h)
-    PhotonTotals totals;                 // removed, torn and cut patches' power counts as dropped
+    PhotonTotals totals;  // removed (also in totals.removed), torn and cut patches' power: dropped
     glm::dvec4 fixedPointScale{0.0};
     int64_t steps = 0;             // patch steps, all patches
     int64_t startingPatches = 0;   // active starting patches (their rays reach the box)

@@ -117,7 +117,10 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
     auto finish = [&](const shared::GpuWavefrontPatch& p, int state, glm::vec3 lost) {
         sums.finish(state, glm::vec3(p.power), lost, state == EK_PATCH_SPLIT);
         if (state == EK_PHOTON_CUT) sums.addCut();
-        if (state == EK_PATCH_REMOVED) counters.removed.fetch_add(1, std::memory_order_relaxed);
+        if (state == EK_PATCH_REMOVED) {
+            counters.removed.fetch_add(1, std::memory_order_relaxed);
+            sums.addRemoved(glm::vec3(p.power));
+        }
         if (state == EK_PATCH_TORN) counters.torn.fetch_add(1, std::memory_order_relaxed);
     };
 

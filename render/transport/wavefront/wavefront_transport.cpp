@@ -126,7 +126,7 @@ TransportOutputCpu WavefrontTransport::outputCpu() const {
 
 std::optional<EnergyBalance> WavefrontTransport::energy() const {
     const PhotonTotals& t = cpu_.totals;
-    return EnergyBalance{t.emitted, t.extinguished, t.escaped, t.dropped, t.received};
+    return EnergyBalance{t.emitted, t.extinguished, t.escaped, t.dropped, t.received, t.removed};
 }
 
 }  // namespace eikon

@@ -1,0 +1,95 @@
+// `eikon render --stats` and `--stats-json` with the wavefront method: the splits, the patches
+// removed at a caustic, and the energy account with the removed power on its own line, as a
+// user reading the figures of a render sees them.
+#include <catch2/catch.hpp>
+
+#include <regex>
+#include <string>
+
+#include "support/run_eikon.h"
+#include "support/test_paths.h"
+
+using eikon::test::quoted;
+using eikon::test::readFile;
+using eikon::test::runEikon;
+using eikon::test::scratchDir;
+using eikon::test::writeFile;
+
+namespace {
+
+// A glass ball in thin fog under a light from straight above; the paper's rule removes the
+// patches that turn inside out at the ball's focus.
+const char* kBallInFog = R"({
+  "volume": { "bounds": { "min": [-1, -1, -1], "max": [1, 1, 1] }, "resolution": 32 },
+  "sources": [
+    { "type": "sphere", "field": "n", "center": [0, 0.3, 0], "radius": 0.5, "value": 1.0,
+      "falloff": 0.1, "voxel_size": 0.0625 },
+    { "type": "box", "field": "density", "min": [-1, -1, -1], "max": [1, 1, 1], "value": 1.0,
+      "voxel_size": 0.0625 }
+  ],
+  "materials": [
+    { "name": "glass", "field": "n", "ior": 1.5 },
+    { "name": "fog", "field": "density", "absorption": [0.1, 0.1, 0.1],
+      "scattering": [0.5, 0.5, 0.5] }
+  ],
+  "lights": [ { "type": "directional", "direction": [0, -1, 0], "color": [1, 1, 1] } ],
+  "camera": { "position": [0, 0, 4], "look_at": [0, 0, 0] },
+  "render": { "width": 32, "height": 24,
+              "light_transport": { "method": "wavefront",
+                                   "wavefront": { "per_side": 24, "max_level": 4,
+                                                  "at_caustic": "remove" } } }
+})";
+
+// The number after `label` in `text` (a decimal or exponent form), or NaN.
+double numberAfter(const std::string& text, const std::string& label) {
+    std::smatch m;
+    const std::regex pattern(label + " ([-+0-9.eE]+)");
+    return std::regex_search(text, m, pattern) ? std::stod(m[1]) : std::nan("");
+}
+
+}  // namespace
+
+TEST_CASE("eikon render --stats: the wavefront's splits, removals and energy account",
+          "[cli][wavefront]") {
+    const std::string dir = scratchDir("cli_wavefront_stats");
+    writeFile(dir + "/ball.json", kBallInFog);
+    const auto r = runEikon("render " + quoted(dir + "/ball.json") + " --backend cpu -o " +
+                                quoted(dir + "/ball.png") + " --stats --stats-json " +
+                                quoted(dir + "/stats.json"),
+                            dir);
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+
+    // "wavefront: S split, R refused a split (patch budget), T torn, N removed at caustics"
+    std::smatch m;
+    REQUIRE(std::regex_search(
+        r.out, m,
+        std::regex("wavefront: ([0-9]+) split, ([0-9]+) refused a split \\(patch budget\\), "
+                   "([0-9]+) torn, ([0-9]+) removed at caustics")));
+    CHECK(std::stoll(m[4]) > 0);
+
+    // "wavefront energy: emitted E; extinguished a, escaped b, received c, dropped d (removed at
+    // caustics e); unaccounted u"
+    REQUIRE(r.out.find("wavefront energy: emitted") != std::string::npos);
+    const double extinguished = numberAfter(r.out, "extinguished");
+    const double escaped = numberAfter(r.out, "escaped");
+    const double dropped = numberAfter(r.out, "dropped");
+    const double removed = numberAfter(r.out, "\\(removed at caustics");
+    const double unaccounted = numberAfter(r.out, "unaccounted");
+    // Shares of the emitted power: the fog takes some, most leaves through the faces, and what
+    // the rule removes is part of what is dropped.
+    CHECK(extinguished > 0.0);
+    CHECK(escaped > 0.1);
+    CHECK(removed > 0.0);
+    CHECK(removed <= dropped);
+    CHECK(extinguished + escaped + dropped == Approx(1.0).margin(1e-3));
+    CHECK(std::abs(unaccounted) < 1e-6);
+
+    const std::string json = readFile(dir + "/stats.json");
+    for (const char* key : {"particles_split", "particles_removed", "energy_emitted",
+                            "energy_extinguished", "energy_escaped", "energy_received",
+                            "energy_dropped", "energy_removed"}) {
+        INFO(key);
+        CHECK(json.find(std::string("\"") + key + "\"") != std::string::npos);
+    }
+}
