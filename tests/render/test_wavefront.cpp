@@ -161,7 +161,7 @@ TEST_CASE("particles of the eikonal system follow the linear n^2 parabola at equ
     const double eulerFine = errorWith(EK_WAVEFRONT_EULER, 160);
     INFO("error in voxels after 40 steps: RK4 " << rk4 << ", midpoint " << midpoint << ", Euler "
                                                 << euler << " (160 steps: " << eulerFine << ")");
-    // Measured: RK4 4.2e-5 voxels, midpoint 6.6e-5, Euler 0.017 (0.0043 with 4x the steps). The
+    // Measured: RK4 4.9e-5 voxels, midpoint 6.4e-5, Euler 0.017 (0.0043 with 4x the steps). The
     // ∇n volume is n's differences sampled trilinearly; here n is nearly linear, so what is left
     // is the integrators' own error.
     CHECK(rk4 < 1e-3);
@@ -207,6 +207,157 @@ TEST_CASE("a point light's wavefront keeps the intensity law: E r^2 = I on every
 }
 
 TEST_CASE(
+    "a converging lens: on the axis E grows as A(0)/A(t) until the focus, and the energy "
+    "account closes with the removed power reported",
+    "[wavefront][lens]") {
+    // A GRIN lens: n − 1 = w(y)·(Δ − r²/(2f)) within the aperture a, with a window w of
+    // ∫w dy = 1 around the plane y = yLens. A ray at r leaves it with sin θ = ∫∂n/∂r dy = −r/f,
+    // so a collimated beam converges on the axis and its cross-section, the patches' area,
+    // shrinks as r(z)²: E(z) = E0 (r0 / r(z))². In the thin-lens limit r(z)/r0 = 1 − z/f; this
+    // lens is 6 voxels thick with n up to 1.8, where rays slow to 1/n and move sideways less,
+    // which moves its principal plane 0.026 below the window's centre (0.8 voxels, 14 % of E at
+    // z = 3f/4). The reference is therefore the paraxial ray of the lens's own n, integrated in
+    // double precision in 10⁴ slices: dr/dy = p/n(y), dp/dy = −w(y) r/f (no grid, no RK4).
+    constexpr int kRes = 63;  // odd: x = z = 0 runs through a column of voxel centres
+    constexpr double kVoxel = 2.0 / kRes;
+    constexpr float kFocal = 1.0f, kAperture = 0.4f, kLensY = 0.6f;
+    constexpr float kHalfWidth = 3.0f * float(kVoxel);
+    const float delta = kAperture * kAperture / (2.0f * kFocal);
+    auto window = [&](double y) {
+        const double u = (y - kLensY) / kHalfWidth;
+        if (std::abs(u) >= 1.0) return 0.0;
+        const double c = std::cos(0.5 * glm::pi<double>() * u);
+        return c * c / kHalfWidth;  // ∫w dy = 1
+    };
+    auto lens = [&](glm::vec3 x) {
+        const float r2 = std::min(x.x * x.x + x.z * x.z, kAperture * kAperture);
+        return float(window(x.y)) * (delta - r2 / (2.0f * kFocal));  // n − 1, read with ior 2
+    };
+    // r(z)/r0 of the paraxial ray, z below yLens, for z past the window (a straight line there).
+    double slope = 0.0, offset = 0.0;  // r(z)/r0 = offset + slope · z
+    {
+        const int slices = 10000;
+        const double dy = 2.0 * kHalfWidth / slices;
+        double r = 1.0, p = 0.0;
+        for (int i = 0; i < slices; ++i) {  // midpoint rule from the window's top down
+            const double y = kLensY + kHalfWidth - (i + 0.5) * dy;
+            const double n = 1.0 + window(y) * delta;
+            const double rMid = r + 0.5 * dy * p / n;
+            p -= dy * window(y) * rMid / kFocal;
+            r += dy * p / n;
+        }
+        slope = p;  // n = 1 below the window: dr/dz = p
+        offset = r - p * kHalfWidth;
+    }
+    auto paraxialE = [&](double z) { return 1.0 / std::pow(offset + slope * z, 2); };
+    const PhotonScene s(kRes, 2.0f, glm::vec3(0.0f), glm::vec3(0.0f, -1.0f, 0.0f), lens);
+    const float windowBottom = kLensY - kHalfWidth;
+    {
+        // One particle in fine steps: the sideways momentum it gains is ∫∂n/∂x ds along its own
+        // path, as the ray equation says (with dx/dt = v/n², as eqs. 12-13 are written, the
+        // sampled n and ∇n let |v| drift from n inside the lens and it gained 2 % more).
+        shared::WavefrontTestKernel k = kernelFor(s);
+        glm::vec3 x(0.05f, 0.95f, 0.0f), v(0.0f, -1.0f, 0.0f);
+        double pushed = 0.0;
+        while (x.y > 0.3f) {
+            const glm::vec3 before = x;
+            REQUIRE(k.wavefrontAdvance(EK_WAVEFRONT_RK4, x, v, 5e-5f));
+            pushed += double(glm::length(x - before)) * k.wavefrontIndexAt(0.5f * (x + before)).x;
+        }
+        INFO("v.x " << v.x << ", ∫∂n/∂x ds " << pushed);
+        CHECK(double(v.x) == Approx(pushed).epsilon(1e-3));
+        CHECK(glm::length(v) == Approx(1.0f).epsilon(1e-3));  // n = 1 past the lens
+    }
+
+    // The patches near the axis, stepped as the trace steps them: Φ/A from below the window to
+    // z = 3f/4 (E ×16).
+    WavefrontSettings settings;  // one starting patch per voxel column (64 per side)
+    {
+        shared::WavefrontTestKernel k = kernelFor(s);
+        const WavefrontPlan plan = planWavefronts(s.setup, settings);
+        double worst = 0.0, worstAt = 0.0, worstThin = 0.0;
+        int checked = 0;
+        for (shared::GpuWavefrontPatch p : generatePatchesCpu(s.setup, s.gradient, settings)) {
+            const glm::vec3 c = k.patchCentroid(p);
+            if (int(p.state.x) != EK_PHOTON_ACTIVE ||
+                c.x * c.x + c.z * c.z > 4.0f * kVoxel * kVoxel)
+                continue;
+            glm::vec3 lost(0.0f);
+            while (k.patchStep(p, plan.dt, EK_WAVEFRONT_RK4, EK_WAVEFRONT_KEEP, 1, lost) ==
+                   EK_PHOTON_ACTIVE) {
+                if (k.patchCentroid(p).y > windowBottom) continue;
+                const double z = double(kLensY) - double(k.patchCentroid(p).y);
+                if (z > 0.75 * kFocal) break;
+                const double e = double(k.patchIrradiance(p).x);
+                const double error = std::abs(e / paraxialE(z) - 1.0);
+                if (error > worst) worst = error, worstAt = z;
+                worstThin = std::max(worstThin, std::abs(e * std::pow(1.0 - z / kFocal, 2) - 1.0));
+                ++checked;
+            }
+        }
+        INFO(checked << " patch steps near the axis; Φ/A against the paraxial ray: worst relative "
+                     << "error " << worst << " at z = " << worstAt
+                     << " (E/E0 = " << paraxialE(worstAt) << "); against the thin lens "
+                     << worstThin << "; effective focal length " << -1.0 / slope
+                     << ", principal plane " << (offset - 1.0) / -slope << " below the centre");
+        CHECK(checked > 100);
+        // Measured 2.0 % at E ×10.7 (0.93 % at half the step, 0.91 % at a quarter: what is left is
+        // the sampled n and its differences against the analytic lens).
+        CHECK(worst < 0.03);
+        CHECK(worstThin > 0.1);  // the thick lens's shift is real: the reference matters
+    }
+
+    // What the view reads: the deposits smoothed (3×3×3), per axis voxel against the reference
+    // averaged over the voxel's height (Simpson).
+    const WavefrontResultCpu kept = trace(s, settings);
+    const std::vector<glm::vec4> smoothed = smoothVolumeCpu(kept.radiance, kept.resolution);
+    const int axis = kRes / 2;
+    auto axisRows = [&](const std::function<void(int, double, double)>& visit) {
+        // From the second voxel wholly below the window (the smoothing reaches one voxel).
+        for (int j = int(std::floor((windowBottom + 1.0f) / kVoxel)) - 2; j >= 0; --j) {
+            const double top = double(kLensY) - (-1.0 + (j + 1) * kVoxel);
+            if (top + kVoxel > 0.75 * kFocal) break;
+            visit(j, top, top + kVoxel);
+        }
+    };
+    double worstDeposit = 0.0;
+    axisRows([&](int j, double top, double bottom) {
+        const double want =
+            (paraxialE(top) + 4.0 * paraxialE(0.5 * (top + bottom)) + paraxialE(bottom)) / 6.0;
+        const double got = smoothed[s.field.index(axis, j, axis)].g / std::pow(kVoxel, 3);
+        worstDeposit = std::max(worstDeposit, std::abs(got / want - 1.0));
+    });
+    INFO("deposited E on the axis, smoothed: worst relative error " << worstDeposit);
+    // Measured 16 %: the deposit's sampling, not the wavefront's: 2 × 2 chords per patch land
+    // in the axis voxel in whole numbers as the patches shrink (unsmoothed: up to 50 %). A
+    // deposit spread over each patch's footprint would do better; not yet done.
+    CHECK(worstDeposit < 0.25);
+    CHECK(maxRelativeImbalance(kept.totals) < 1e-3);
+    CHECK(kept.totals.removed == glm::dvec3(0.0));
+
+    // The paper's rule removes the patches that cross the focus; before it nothing changes, and
+    // the power removed is reported apart from the rest of what is dropped.
+    settings.atCaustic = EK_WAVEFRONT_REMOVE;
+    const WavefrontResultCpu removed = trace(s, settings);
+    CHECK(removed.patchesRemoved > 0);
+    CHECK(maxRelativeImbalance(removed.totals) < 1e-3);
+    CHECK(removed.totals.removed.x <= removed.totals.dropped.x);
+    // Only light through the aperture focuses. Not all of it is removed: a patch is mapped
+    // through a point focus by a half turn, which keeps its orientation, so only those whose
+    // radial and azimuthal extents collapse in different steps (by the lens's aberration) are
+    // seen to turn inside out.
+    const double throughAperture = glm::pi<double>() * kAperture * kAperture;
+    INFO("removed " << removed.totals.removed.x << " of " << throughAperture
+                    << " through the aperture");
+    CHECK(removed.totals.removed.x > 0.5 * throughAperture);
+    CHECK(removed.totals.removed.x < 1.02 * throughAperture);
+    axisRows([&](int j, double, double) {
+        const size_t i = s.field.index(axis, j, axis);
+        CHECK(removed.radiance[i].g == Approx(kept.radiance[i].g).epsilon(1e-6));
+    });
+}
+
+TEST_CASE(
     "a ball lens focuses a paraxial wavefront at nR / (2(n - 1)), without NaN, and the "
     "paper's rule removes the patches that cross the focus",
     "[wavefront][lens]") {
@@ -249,7 +400,7 @@ TEST_CASE(
                   << (measured - expected) / kVoxel << " voxels; " << kept.patchesTraced
                   << " patches, " << kept.patchesSplit << " splits, " << kept.causticCrossings
                   << " caustic crossings");
-    // Measured −0.10 voxels (photons at 95³: 0.55, test_ball_lens.cpp); the bound is the issue's.
+    // Measured 0.019 voxels (photons at 95³: 0.55, test_ball_lens.cpp); the bound is the issue's.
     CHECK(std::abs(measured - expected) < 1.5 * kVoxel);
 
     // The paper's rule: patches that turn inside out are removed, their power counted as
@@ -348,7 +499,7 @@ TEST_CASE(
             if (polar == 0.0) break;
         }
     INFO(checked << " particles; worst distance from the image " << worst << " voxels");
-    // The issue's bound: within 1 voxel at 64³ (0.063 measured).
+    // The issue's bound: within 1 voxel at 64³ (0.069 measured).
     CHECK(worst < 1.0);
 }
 
