@@ -86,9 +86,9 @@ TEST_CASE("eikon render --stats: the wavefront's splits, removals and energy acc
     CHECK(std::abs(unaccounted) < 1e-6);
 
     const std::string json = readFile(dir + "/stats.json");
-    for (const char* key : {"particles_split", "particles_removed", "energy_emitted",
-                            "energy_extinguished", "energy_escaped", "energy_received",
-                            "energy_dropped", "energy_removed"}) {
+    for (const char* key :
+         {"particles_split", "particles_removed", "energy_emitted", "energy_extinguished",
+          "energy_escaped", "energy_received", "energy_dropped", "energy_removed"}) {
         INFO(key);
         CHECK(json.find(std::string("\"") + key + "\"") != std::string::npos);
     }
