@@ -93,3 +93,48 @@ TEST_CASE("eikon render --stats: the wavefront's splits, removals and energy acc
         CHECK(json.find(std::string("\"") + key + "\"") != std::string::npos);
     }
 }
+
+TEST_CASE("a light that misses the volume: one warning naming it, a dark picture, exit 0",
+          "[cli][wavefront][photons]") {
+    const std::string dir = scratchDir("cli_light_misses");
+    // lights[0], a spot above the box pointing up, reaches nothing; lights[1] does.
+    auto scene = [](const std::string& method, const char* spotColor, bool withSun) {
+        std::string s = kBallInFog;
+        const std::string sun =
+            R"({ "type": "directional", "direction": [0, -1, 0], "color": [1, 1, 1] })";
+        const std::string spot =
+            std::string(
+                R"({ "type": "spot", "position": [0, 2, 0], "direction": [0, 1, 0], "color": )") +
+            spotColor + R"(, "cone_angle_deg": 20 })";
+        s.replace(s.find(sun), sun.size(), withSun ? spot + ", " + sun : spot);
+        const std::string wavefront = R"("method": "wavefront")";
+        s.replace(s.find(wavefront), wavefront.size(), "\"method\": \"" + method + "\"");
+        return s;
+    };
+    for (const std::string method : {"wavefront", "photons"}) {
+        INFO(method);
+        writeFile(dir + "/both.json", scene(method, "[1, 1, 1]", true));
+        const auto both = runEikon("render " + quoted(dir + "/both.json") +
+                                       " --backend cpu --quiet -o " + quoted(dir + "/both.png"),
+                                   dir);
+        INFO("stderr:\n" << both.err);
+        CHECK(both.exitCode == 0);
+        CHECK(both.err ==
+              "warning: lights[0]: none of its light reaches the volume (it faces away or its "
+              "cone misses the box): it lights nothing there\n");
+
+        // Alone, it leaves the picture as a black light does (which is not warned about).
+        writeFile(dir + "/away.json", scene(method, "[1, 1, 1]", false));
+        writeFile(dir + "/black.json", scene(method, "[0, 0, 0]", false));
+        const auto away = runEikon("render " + quoted(dir + "/away.json") +
+                                       " --backend cpu --quiet -o " + quoted(dir + "/away.png"),
+                                   dir);
+        const auto black = runEikon("render " + quoted(dir + "/black.json") +
+                                        " --backend cpu --quiet -o " + quoted(dir + "/black.png"),
+                                    dir);
+        CHECK(away.exitCode == 0);
+        CHECK(black.exitCode == 0);
+        CHECK(black.err.empty());
+        CHECK(readFile(dir + "/away.png") == readFile(dir + "/black.png"));
+    }
+}

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "render/transport/photons/fixed_deposits_cpu.h"
+#include "render/transport/photons/lights_missing_volume.h"
 #include "render/transport/photons/photon_tracing.h"
 
 namespace eikon {
@@ -99,6 +100,9 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
     // Step 4: generate every light's photons; the emitted power, summed in index order, sets the
     // fixed-point scales before anything is deposited.
     result.photons = generatePhotonsCpu(setup, gradient, settings);
+    warnLightsMissingVolume(setup, plan.lights, [&](size_t i) {
+        return int(result.photons[i].position.w) == EK_PHOTON_ACTIVE;
+    });
     for (const shared::GpuPhoton& p : result.photons) {
         if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
         result.totals.emitted += glm::dvec3(glm::vec3(p.flux));

@@ -10,6 +10,7 @@
 #include "render/receiver_map.h"
 #include "render/shader_program.h"
 #include "render/transport/fixed_point.h"
+#include "render/transport/photons/lights_missing_volume.h"
 #include "render/transport/photons/photon_tracing_gpu.h"
 #include "render/volume_kernels_cpu.h"
 #include "render/volume_textures.h"
@@ -160,6 +161,9 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     // CPU twin's order (index order, in double), which a GPU reduction would not reproduce.
     const std::vector<shared::GpuPhoton> started =
         readBuffer<shared::GpuPhoton>(photons_, photonCount);
+    warnLightsMissingVolume(setup, plan.lights, [&](size_t i) {
+        return int(started[i].position.w) == EK_PHOTON_ACTIVE;
+    });
     for (const shared::GpuPhoton& p : started) {
         if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
         host.totals.emitted += glm::dvec3(glm::vec3(p.flux));

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "render/transport/photons/fixed_deposits_cpu.h"
+#include "render/transport/photons/lights_missing_volume.h"
 #include "render/transport/wavefront/wavefront_tracing.h"
 
 EK_NAMESPACE_BEGIN
@@ -98,6 +99,8 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
     // before anything is deposited (as for photons).
     const std::vector<shared::GpuWavefrontPatch> roots =
         generatePatchesCpu(setup, gradient, settings);
+    warnLightsMissingVolume(setup, plan.lights,
+                            [&](size_t i) { return int(roots[i].state.x) == EK_PHOTON_ACTIVE; });
     std::vector<uint32_t> active;
     for (size_t i = 0; i < roots.size(); ++i) {
         if (int(roots[i].state.x) != EK_PHOTON_ACTIVE) continue;
