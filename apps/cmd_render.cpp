@@ -149,13 +149,15 @@ void printTransportStats(const FrameRenderer& renderer, const std::vector<StageT
     for (const StageTime& s : stats)
         if (s.name == method) ms += std::max(s.gpuMs, s.cpuMs);
     const TransportStats last = renderer.lastTransportStats();
-    std::printf(
-        "  %s: %lld traced, %lld steps (%.1f per particle), %.2f M steps/s; %lld cut, %d "
-        "rounds\n",
-        method.c_str(), static_cast<long long>(last.particlesTraced), static_cast<long long>(steps),
-        last.particlesTraced > 0 ? double(steps) / double(last.particlesTraced) : 0.0,
-        ms > 0.0 ? double(steps) / (ms * 1e3) : 0.0, static_cast<long long>(last.particlesCut),
-        last.rounds);
+    // Rounds are the photon march's (its compaction passes); a method without them prints none.
+    const std::string rounds =
+        last.rounds > 0 ? ", " + std::to_string(last.rounds) + " rounds" : "";
+    std::printf("  %s: %lld traced, %lld steps (%.1f per particle), %.2f M steps/s; %lld cut%s\n",
+                method.c_str(), static_cast<long long>(last.particlesTraced),
+                static_cast<long long>(steps),
+                last.particlesTraced > 0 ? double(steps) / double(last.particlesTraced) : 0.0,
+                ms > 0.0 ? double(steps) / (ms * 1e3) : 0.0,
+                static_cast<long long>(last.particlesCut), rounds.c_str());
     if (last.particlesSplit > 0 || last.splitsRefused > 0 || last.particlesTorn > 0 ||
         last.particlesRemoved > 0)
         std::printf(
