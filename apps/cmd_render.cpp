@@ -168,15 +168,15 @@ void printTransportStats(const FrameRenderer& renderer, const std::vector<StageT
             static_cast<long long>(last.particlesRemoved));
     if (const std::optional<EnergyBalance> e = renderer.lightTransport().energy()) {
         // Shares of the power that entered the volume.
-        const auto sum = channelSum;
-        const double in = std::max(sum(e->emitted), 1e-300);
-        const double rest = sum(e->extinguished + e->escaped + e->received + e->dropped);
+        const double in = std::max(channelSum(e->emitted), 1e-300);
+        auto share = [&](const glm::dvec3& part) { return channelSum(part) / in; };
         std::printf(
-            "  %s energy: emitted %.6g; extinguished %.4f, escaped %.4f, received %.4f, dropped "
-            "%.4f (removed at caustics %.4f); unaccounted %.2e\n",
-            method.c_str(), sum(e->emitted), sum(e->extinguished) / in, sum(e->escaped) / in,
-            sum(e->received) / in, sum(e->dropped) / in, sum(e->removed) / in,
-            (sum(e->emitted) - rest) / in);
+            "  %s energy: emitted %.6g; extinguished %.4f, escaped %.4f, received %.4f, "
+            "reflected at surfaces %.4f, dropped %.4f (removed at caustics %.4f); unaccounted "
+            "%.2e\n",
+            method.c_str(), channelSum(e->emitted), share(e->extinguished), share(e->escaped),
+            share(e->received), share(e->reflected), share(e->dropped), share(e->removed),
+            share(e->emitted - e->accounted()));
     }
 }
 
@@ -202,13 +202,13 @@ FrameCounters frameCounters(const FrameRenderer& renderer, int64_t stepsBefore) 
             c["particles_removed"] = double(last.particlesRemoved);
         }
         if (const std::optional<EnergyBalance> e = renderer.lightTransport().energy()) {
-            const auto sum = channelSum;
-            c["energy_emitted"] = sum(e->emitted);
-            c["energy_extinguished"] = sum(e->extinguished);
-            c["energy_escaped"] = sum(e->escaped);
-            c["energy_received"] = sum(e->received);
-            c["energy_dropped"] = sum(e->dropped);
-            c["energy_removed"] = sum(e->removed);
+            c["energy_emitted"] = channelSum(e->emitted);
+            c["energy_extinguished"] = channelSum(e->extinguished);
+            c["energy_escaped"] = channelSum(e->escaped);
+            c["energy_received"] = channelSum(e->received);
+            c["energy_reflected"] = channelSum(e->reflected);
+            c["energy_dropped"] = channelSum(e->dropped);
+            c["energy_removed"] = channelSum(e->removed);
         }
     }
     return c;

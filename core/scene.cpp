@@ -379,6 +379,8 @@ MaterialSpec readMaterial(const Value& value) {
     } else if (auto t = object.optional("ambient_kelvin")) {
         t->fail("\"ambient_kelvin\" needs \"gladstone_dale\"");
     }
+    material.fresnel = material.gladstoneDale == 0.0f;
+    if (auto fresnel = object.optional("fresnel")) material.fresnel = fresnel->boolean();
     object.finish();
     return material;
 }

@@ -107,6 +107,12 @@ struct MaterialSpec {
     // material refract" tests read; the map itself is not linear in f.
     float gladstoneDale = 0.0f;
     float ambientKelvin = 288.15f;
+    // The edge of its field is a sharp surface (glass, water: a mesh's, or a field that steps from
+    // 0 to 1 in a few voxels), where light crossing it is partly reflected by Fresnel's law
+    // (shaders/shared/fresnel.h). False for an index graded over many wavelengths (a GRIN lens,
+    // hot air), which reflects nothing however steep its gradient is on the grid. The parser
+    // makes it false for Gladstone–Dale materials.
+    bool fresnel = true;
 
     // n − 1 per unit of the field at f = 0: ior − 1, or −gladstoneDale/ambientKelvin computed
     // directly (ior itself, a float next to 1, keeps only ~2 digits of a real air's 1e-6).

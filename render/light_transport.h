@@ -65,7 +65,7 @@ struct TransportStats {
 
 // Where the light of the last run went, per colour channel in power, for methods that account
 // for it (photons do; light volumes store transmittance only). Balanced when emitted equals the
-// sum of the others.
+// sum of the others (removed is part of dropped).
 struct EnergyBalance {
     glm::dvec3 emitted{0.0};       // entered the volume
     glm::dvec3 extinguished{0.0};  // absorbed or scattered out on the way
@@ -73,6 +73,10 @@ struct EnergyBalance {
     glm::dvec3 dropped{0.0};       // in particles removed below a threshold or cut
     glm::dvec3 received{0.0};      // stopped on a receiver
     glm::dvec3 removed{0.0};       // of dropped: removed at caustics (the wavefront's rule)
+    glm::dvec3 reflected{0.0};     // reflected at surfaces (Fresnel) and not followed
+
+    // Where the emitted power is known to have gone: equal to emitted when balanced.
+    glm::dvec3 accounted() const { return extinguished + escaped + dropped + received + reflected; }
 };
 
 // The output contract on the CPU: views into the method's own storage, valid until its next run.

@@ -134,7 +134,9 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
         // w: what makes a Gladstone–Dale material's index exact (shaders/shared/material_index.h).
         g.scattering = v4(mat.scattering, mat.inverseAmbient());
         g.emission = v4(mat.emission, mat.indexSlope());
-        g.slot = glm::ivec4(int(slot - setup.slotFields.begin()), 0, 0, 0);
+        // y: a sharp surface, only where the material refracts at all (fresnel.h).
+        g.slot = glm::ivec4(int(slot - setup.slotFields.begin()),
+                            mat.fresnel && mat.indexSlope() != 0.0f ? 1 : 0, 0, 0);
     }
     for (size_t l = 0; l < scene.lights.size(); ++l) p.lights[l] = packLight(scene.lights[l]);
     // n ≡ 1 everywhere takes straight rays and needs no ∇n volume.

@@ -46,7 +46,9 @@ struct GpuMaterial {
     vec4 scattering;
     // rgb: radiance per scene unit; w: n − 1 per unit of the field, ior − 1 (materialIndexSlope)
     vec4 emission;
-    ivec4 slot;  // x: which field texture the material reads (materialSlot); yzw: unused
+    // x: which field texture the material reads (materialSlot); y: 1 where the edge of its field
+    // is a sharp surface that reflects part of the light crossing it (materialFresnel); zw: unused
+    ivec4 slot;
 };
 
 struct GpuLight {
@@ -212,6 +214,9 @@ inline float materialIndexSlope(const GpuMaterial& m) {
 inline int materialSlot(const GpuMaterial& m) {
     return m.slot.x;  // the field slot the material reads (fetchVolume)
 }
+inline bool materialFresnel(const GpuMaterial& m) {
+    return m.slot.y != 0;  // its edge reflects by Fresnel's law (shaders/shared/fresnel.h)
+}
 inline int lightType(const GpuLight& l) {
     return int(l.position.w);  // EK_LIGHT_*
 }
@@ -247,6 +252,7 @@ inline int receiverMapStart(const GpuReceiver& r) {
 #define materialInverseAmbient(m) ((m).scattering.w)
 #define materialIndexSlope(m) ((m).emission.w)
 #define materialSlot(m) ((m).slot.x)
+#define materialFresnel(m) ((m).slot.y != 0)
 #define lightType(l) (int((l).position.w))
 #define lightVersineOuter(l) ((l).direction.w)
 #define lightVersineInner(l) ((l).radiance.w)

@@ -18,6 +18,11 @@
 // irradiance E(t) = Φ(t)/A(t) = E(0)·A(0)/A(t)·exp(−∫κ ds) is the paper's eqs. 15-16
 // (∫σ_t/n dt = ∫κ ds). Carrying Φ instead of E keeps a patch finite where A → 0 at a caustic.
 //
+// Surfaces. Where a patch's centroid crosses the sharp surface of a material marked `fresnel`
+// (fresnel.h finds it), the power that goes on is scaled by the Fresnel transmittance 1 − R; the
+// reflected R is counted apart and not followed (eq. 5's T(t), the paper's product of the
+// transmission factors met along the way).
+//
 // Deposits. Each step deposits the patch's power × the length of chords through it inside the
 // box into the voxels they cross (photons.h depositSegment: flux·length, the output contract's
 // fluence units, with the luminance-weighted direction): the paper deposits at patch midpoints
@@ -51,16 +56,20 @@
 // One patch of a wavefront; only vec4 members, so std430 and C++ offsets agree. Corners in grid
 // order (0,0), (1,0), (1,1), (0,1) of the patch's own parameter square.
 struct GpuWavefrontPatch {
-    vec4 corner[4];    // xyz: world position; w: 0
-    vec4 velocity[4];  // xyz: v = n dx/ds of the corner's particle; w: 0
-    vec4 power;        // rgb: Φ, the power the patch carries; w: Φ below which it is dropped
-    vec4 state;        // x: EK_PHOTON_* or EK_PATCH_*; y: steps taken; z: split level;
-                       // w: the sign its orientation had when it started (±1)
+    vec4 corner[4];      // xyz: world position; w: 0
+    vec4 velocity[4];    // xyz: v = n dx/ds of the corner's particle; w: 0
+    vec4 power;          // rgb: Φ, the power the patch carries; w: Φ below which it is dropped
+    vec4 state;          // x: EK_PHOTON_* or EK_PATCH_*; y: steps taken; z: split level;
+                         // w: the sign its orientation had when it started (±1)
+    vec4 surface;        // its centroid's walk across surfaces (fresnel.h surfaceWalkStart)
+    vec4 surfaceNormal;  // xyz: the ∇n met in the surface crossing under way; w: 0
 };
 
 #endif
 
 #ifndef EK_WAVEFRONT_TYPES_ONLY
+
+#include "fresnel.h"
 
 bool insideVolumeBox(vec3 x) {
     return all(greaterThanEqual(x, vec3(params.volumeMin))) &&
@@ -194,6 +203,10 @@ GpuWavefrontPatch patchQuarter(GpuWavefrontPatch p, int k) {
     patchPointAt(p, a0 + 0.5f, b0 + 0.5f, c.corner[2], c.velocity[2]);
     patchPointAt(p, a0, b0 + 0.5f, c.corner[3], c.velocity[3]);
     c.state = vec4(float(EK_PHOTON_ACTIVE), p.state.y, p.state.z + 1.0f, p.state.w);
+    // The walk goes on from the child's own centroid (a crossing under way stays under way).
+    const vec3 centre = patchCentroid(c);
+    c.surface.x = surfaceIndexAt(worldToVolumeIndex(centre));
+    c.surface.z = wavefrontIndexAt(centre).w;
     return c;
 }
 
@@ -235,6 +248,10 @@ GpuWavefrontPatch startPatch(vec3 x0, vec3 x1, vec3 x2, vec3 x3, vec3 d0, vec3 d
     const float orientation = patchOrientation(p);
     p.state = vec4(float(lit ? EK_PHOTON_ACTIVE : EK_PHOTON_INACTIVE), 0.0f, 0.0f,
                    orientation < 0.0f ? -1.0f : 1.0f);
+    const vec3 centre = patchCentroid(p);
+    p.surface =
+        surfaceWalkStart(wavefrontIndexAt(centre).w, surfaceIndexAt(worldToVolumeIndex(centre)));
+    p.surfaceNormal = vec4(0.0f);
     return p;
 }
 
@@ -377,14 +394,15 @@ void depositPatchStep(GpuWavefrontPatch before, GpuWavefrontPatch after, int sam
 // One time step Δt of an active patch: its four particles advance (wavefrontAdvance), the step
 // is deposited (depositPatchStep, `samples` per side), and the patch's power decays by e^(−κ s)
 // over its centroid's chord inside the box (κ at that chord's midpoint); extinguished gets the
-// power lost. A centroid chord that crosses a receiver stops the patch there. Returns the new
-// state: EK_PHOTON_ESCAPED once the patch has left the box (patchHasLeft) or its centroid moves
-// away outside it,
-// EK_PATCH_REMOVED if the orientation flipped and atCaustic is EK_WAVEFRONT_REMOVE (with
-// EK_WAVEFRONT_KEEP the patch goes on and state.w takes the new sign), EK_PHOTON_DROPPED below
-// the threshold or in a degenerate medium.
+// power lost. With surfaceSlope > 0 (n_surface changing faster than that per voxel marks a
+// surface, fresnel.h) the power is then scaled by the Fresnel transmittance where the centroid
+// has crossed a surface, and reflected gets the rest. A centroid chord that crosses a receiver
+// stops the patch there. Returns the new state: EK_PHOTON_ESCAPED once the patch has left the box
+// (patchHasLeft) or its centroid moves away outside it, EK_PATCH_REMOVED if the orientation flipped
+// and atCaustic is EK_WAVEFRONT_REMOVE (with EK_WAVEFRONT_KEEP the patch goes on and state.w takes
+// the new sign), EK_PHOTON_DROPPED below the threshold or in a degenerate medium.
 int patchStep(EK_INOUT(GpuWavefrontPatch) p, float dt, int integrator, int atCaustic, int samples,
-              EK_INOUT(vec3) extinguished) {
+              float surfaceSlope, EK_INOUT(vec3) extinguished, EK_INOUT(vec3) reflected) {
     const GpuWavefrontPatch before = p;
     const vec3 c0 = patchCentroid(p);
     for (int k = 0; k < 4; ++k) {
@@ -422,6 +440,20 @@ int patchStep(EK_INOUT(GpuWavefrontPatch) p, float dt, int integrator, int atCau
         const vec3 next = power * exp(-kappa * (b - a));
         extinguished += power - next;
         power = next;
+    }
+    // Outside the box light goes straight (wavefrontIndexAt): no surface there either.
+    if (surfaceSlope > 0.0f && s > 0.0f && insideVolumeBox(c1)) {
+        const vec3 v =
+            vec3(p.velocity[0]) + vec3(p.velocity[1]) + vec3(p.velocity[2]) + vec3(p.velocity[3]);
+        const vec3 h = volumeVoxelSize();
+        const float perVoxel = surfaceSlope / min(h.x, min(h.y, h.z));  // per scene unit
+        const float transmitted = surfaceWalkStep(p.surface, p.surfaceNormal, wavefrontIndexAt(c1),
+                                                  surfaceIndexAt(worldToVolumeIndex(c1)), 0.25f * v,
+                                                  perVoxel * s, perVoxel);
+        if (transmitted < 1.0f) {
+            reflected += power * (1.0f - transmitted);
+            power *= transmitted;
+        }
     }
     p.power = vec4(power, p.power.w);
     if (receiver >= 0) {

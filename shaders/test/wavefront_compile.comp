@@ -10,6 +10,7 @@ vec4 fetchOctree(ivec3 voxel);
 void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir);
 void depositReceiverTexel(int index, vec3 flux);
 
+#include "../shared/material_index.h"
 #include "../shared/photons.h"
 #include "../shared/wavefront.h"
 
@@ -29,9 +30,12 @@ void main() {
     const int i = int(gl_GlobalInvocationID.x);
     GpuWavefrontPatch p = generatePatch(0, EK_PHOTON_GRID_PARALLEL, 8, i, 1e-4f);
     vec3 extinguished = vec3(0.0f);
+    vec3 reflected = vec3(0.0f);
     for (int s = 0; s < 100 && int(p.state.x) == EK_PHOTON_ACTIVE; ++s) {
         if (patchNeedsSplit(p, 1.0f)) p = patchChild(p, s % 4);
-        p.state.x = float(patchStep(p, 0.1f, i % 3, i % 2, 1 + i % 3, extinguished));  // every integrator
+        // every integrator, with and without surfaces
+        p.state.x = float(patchStep(p, 0.1f, i % 3, i % 2, 1 + i % 3, 0.01f * float(i % 2),
+                                    extinguished, reflected));
     }
     patches[i] = p;
 }

@@ -513,6 +513,23 @@ TEST_CASE("a gladstone_dale material maps temperature to n below that of ambient
     }
 }
 
+TEST_CASE("a material's edge reflects (fresnel) unless it is hot air or marked graded", "[scene]") {
+    const eikon::Scene scene = eikon::parseScene(
+        R"({"sources": [{"type": "sphere"}], "materials": [
+            {"name": "glass", "ior": 1.5},
+            {"name": "grin", "field": "n", "ior": 2, "fresnel": false},
+            {"name": "air", "field": "temperature", "gladstone_dale": 0.00029},
+            {"name": "shocked", "field": "temperature", "gladstone_dale": 0.5, "fresnel": true}]})",
+        "smoke.json");
+    CHECK(scene.materials[0].fresnel);
+    CHECK_FALSE(scene.materials[1].fresnel);
+    CHECK_FALSE(scene.materials[2].fresnel);
+    CHECK(scene.materials[3].fresnel);
+    const Failure f = failureOf(R"({"sources": [{"type": "sphere"}], "materials": [
+        {"name": "m", "ior": 1.5, "fresnel": "yes"}]})");
+    CHECK(f.message == "smoke.json:/materials/0/fresnel: expected true or false, got \"yes\"");
+}
+
 TEST_CASE("missing required keys are reported where they belong", "[scene]") {
     SECTION("no sources") {
         const Failure f = failureOf(R"({"materials": [{"name": "m"}]})");

@@ -22,29 +22,13 @@
 #include "support/fluence_peak.h"
 #include "support/linear_n2_medium.h"
 #include "support/photon_scene.h"
-
-EK_NAMESPACE_BEGIN
-// The shared wavefront functions with nothing to deposit into: for single particles and patches.
-struct WavefrontTestKernel : VolumeAccessCpu {
-    vec4 fetchOctree(ivec3) const { return vec4(0.0f); }
-    void depositVoxel(ivec3, vec3, vec3) const {}
-    void depositReceiverTexel(int, vec3) const {}
-#include "shaders/shared/photons.h"
-#include "shaders/shared/wavefront.h"
-};
-EK_NAMESPACE_END
+#include "support/wavefront_test_kernel.h"
 
 using namespace eikon;
+using eikon::test::kernelFor;
 using eikon::test::PhotonScene;
 
 namespace {
-
-shared::WavefrontTestKernel kernelFor(const PhotonScene& s) {
-    shared::WavefrontTestKernel k{{s.setup.params}};
-    k.fields[0] = s.field.values.data();
-    k.gradient = s.gradient.data();
-    return k;
-}
 
 WavefrontResultCpu trace(const PhotonScene& s, const WavefrontSettings& settings,
                          bool keepPatches = false) {
@@ -54,7 +38,8 @@ WavefrontResultCpu trace(const PhotonScene& s, const WavefrontSettings& settings
 double maxRelativeImbalance(const PhotonTotals& t) {
     double worst = 0.0;
     for (int c = 0; c < 3; ++c) {
-        const double sum = t.escaped[c] + t.extinguished[c] + t.dropped[c] + t.received[c];
+        const double sum =
+            t.escaped[c] + t.extinguished[c] + t.dropped[c] + t.received[c] + t.reflected[c];
         worst = std::max(worst, std::abs(sum - t.emitted[c]) / t.emitted[c]);
     }
     return worst;
@@ -182,16 +167,16 @@ TEST_CASE("a point light's wavefront keeps the intensity law: E r^2 = I on every
     WavefrontSettings settings;
     settings.patchesPerSide = 24;
     const std::vector<shared::GpuWavefrontPatch> patches =
-        generatePatchesCpu(s.setup, s.gradient, settings);
+        generatePatchesCpu(s.setup, {&s.field}, s.gradient, settings);
     const WavefrontPlan plan = planWavefronts(s.setup, settings);
     double worst = 0.0;
     int checked = 0;
     for (shared::GpuWavefrontPatch p : patches) {
         if (int(p.state.x) != EK_PHOTON_ACTIVE) continue;
-        glm::vec3 lost(0.0f);
+        glm::vec3 lost(0.0f), reflected(0.0f);
         for (int step = 0; step < 40; ++step)
-            if (k.patchStep(p, plan.dt, EK_WAVEFRONT_RK4, EK_WAVEFRONT_KEEP, 1, lost) !=
-                EK_PHOTON_ACTIVE)
+            if (k.patchStep(p, plan.dt, EK_WAVEFRONT_RK4, EK_WAVEFRONT_KEEP, 1, 0.0f, lost,
+                            reflected) != EK_PHOTON_ACTIVE)
                 break;
         const double r = glm::length(k.patchCentroid(p) - light);
         const glm::vec3 e = k.patchIrradiance(p);
@@ -250,7 +235,8 @@ TEST_CASE(
         offset = r - p * kHalfWidth;
     }
     auto paraxialE = [&](double z) { return 1.0 / std::pow(offset + slope * z, 2); };
-    const PhotonScene s(kRes, 2.0f, glm::vec3(0.0f), glm::vec3(0.0f, -1.0f, 0.0f), lens);
+    PhotonScene s(kRes, 2.0f, glm::vec3(0.0f), glm::vec3(0.0f, -1.0f, 0.0f), lens);
+    s.markGraded();
     const float windowBottom = kLensY - kHalfWidth;
     {
         // One particle in fine steps: the sideways momentum it gains is ∫∂n/∂x ds along its own
@@ -277,14 +263,15 @@ TEST_CASE(
         const WavefrontPlan plan = planWavefronts(s.setup, settings);
         double worst = 0.0, worstAt = 0.0, worstThin = 0.0;
         int checked = 0;
-        for (shared::GpuWavefrontPatch p : generatePatchesCpu(s.setup, s.gradient, settings)) {
+        for (shared::GpuWavefrontPatch p :
+             generatePatchesCpu(s.setup, {&s.field}, s.gradient, settings)) {
             const glm::vec3 c = k.patchCentroid(p);
             if (int(p.state.x) != EK_PHOTON_ACTIVE ||
                 c.x * c.x + c.z * c.z > 4.0f * kVoxel * kVoxel)
                 continue;
-            glm::vec3 lost(0.0f);
-            while (k.patchStep(p, plan.dt, EK_WAVEFRONT_RK4, EK_WAVEFRONT_KEEP, 1, lost) ==
-                   EK_PHOTON_ACTIVE) {
+            glm::vec3 lost(0.0f), reflected(0.0f);  // the GRIN lens is graded: no surfaces
+            while (k.patchStep(p, plan.dt, EK_WAVEFRONT_RK4, EK_WAVEFRONT_KEEP, 1, 0.0f, lost,
+                               reflected) == EK_PHOTON_ACTIVE) {
                 if (k.patchCentroid(p).y > windowBottom) continue;
                 const double z = double(kLensY) - double(k.patchCentroid(p).y);
                 if (z > 0.75 * kFocal) break;
@@ -432,6 +419,8 @@ TEST_CASE("wavefront results are bit-identical for any thread count", "[wavefron
     tbb::task_arena(4).execute([&] { many = trace(s, settings); });
     REQUIRE(one.patchesSplit > 0);
     REQUIRE(one.patchesTorn > 0);
+    REQUIRE(one.totals.reflected.x > 0.0);  // the ball's surface reflects
+    CHECK(one.totals.reflected == many.totals.reflected);
     CHECK(one.radiance == many.radiance);
     CHECK(one.direction == many.direction);
     CHECK(one.totals.escaped == many.totals.escaped);

@@ -3,6 +3,7 @@
 // user reading the figures of a render sees them.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <regex>
 #include <string>
 
@@ -68,11 +69,12 @@ TEST_CASE("eikon render --stats: the wavefront's splits, removals and energy acc
                    "([0-9]+) torn, ([0-9]+) removed at caustics")));
     CHECK(std::stoll(m[4]) > 0);
 
-    // "wavefront energy: emitted E; extinguished a, escaped b, received c, dropped d (removed at
-    // caustics e); unaccounted u"
+    // "wavefront energy: emitted E; extinguished a, escaped b, received c, reflected at surfaces
+    // f, dropped d (removed at caustics e); unaccounted u"
     REQUIRE(r.out.find("wavefront energy: emitted") != std::string::npos);
     const double extinguished = numberAfter(r.out, "extinguished");
     const double escaped = numberAfter(r.out, "escaped");
+    const double reflected = numberAfter(r.out, "reflected at surfaces");
     const double dropped = numberAfter(r.out, "dropped");
     const double removed = numberAfter(r.out, "\\(removed at caustics");
     const double unaccounted = numberAfter(r.out, "unaccounted");
@@ -82,16 +84,59 @@ TEST_CASE("eikon render --stats: the wavefront's splits, removals and energy acc
     CHECK(escaped > 0.1);
     CHECK(removed > 0.0);
     CHECK(removed <= dropped);
-    CHECK(extinguished + escaped + dropped == Approx(1.0).margin(1e-3));
+    // The ball's surface reflects a few percent of what crosses it (0.04 at normal incidence).
+    CHECK(reflected > 0.005);
+    CHECK(reflected < 0.1);
+    CHECK(extinguished + escaped + dropped + reflected == Approx(1.0).margin(1e-3));
     CHECK(std::abs(unaccounted) < 1e-6);
 
     const std::string json = readFile(dir + "/stats.json");
-    for (const char* key :
-         {"particles_split", "particles_removed", "energy_emitted", "energy_extinguished",
-          "energy_escaped", "energy_received", "energy_dropped", "energy_removed"}) {
+    for (const char* key : {"particles_split", "particles_removed", "energy_emitted",
+                            "energy_extinguished", "energy_escaped", "energy_received",
+                            "energy_reflected", "energy_dropped", "energy_removed"}) {
         INFO(key);
         CHECK(json.find(std::string("\"") + key + "\"") != std::string::npos);
     }
+}
+
+TEST_CASE(
+    "Fresnel off in the wavefront settings or on the material: nothing reflected; bad keys "
+    "are named",
+    "[cli][wavefront][fresnel]") {
+    const std::string dir = scratchDir("cli_wavefront_fresnel");
+    auto reflectedShare = [&](const std::string& name, const std::string& scene) {
+        writeFile(dir + "/" + name + ".json", scene);
+        const auto r =
+            runEikon("render " + quoted(dir + "/" + name + ".json") + " --backend cpu --stats -o " +
+                         quoted(dir + "/" + name + ".png"),
+                     dir);
+        INFO(r.out << r.err);
+        REQUIRE(r.exitCode == 0);
+        return numberAfter(r.out, "reflected at surfaces");
+    };
+    auto replaced = [](std::string text, const std::string& what, const std::string& with) {
+        const size_t at = text.find(what);
+        REQUIRE(at != std::string::npos);
+        return text.replace(at, what.size(), with);
+    };
+    const std::string settingOff = replaced(kBallInFog, R"("at_caustic": "remove")",
+                                            R"("at_caustic": "remove", "fresnel": false)");
+    const std::string materialOff =
+        replaced(kBallInFog, R"("ior": 1.5 })", R"("ior": 1.5, "fresnel": false })");
+    CHECK(reflectedShare("setting_off", settingOff) == 0.0);
+    CHECK(reflectedShare("material_off", materialOff) == 0.0);
+
+    const std::string badSlope =
+        replaced(settingOff, R"("fresnel": false)", R"("fresnel": false, "surface_slope": 0.02)");
+    writeFile(dir + "/bad.json", badSlope);
+    const auto bad = runEikon(
+        "render " + quoted(dir + "/bad.json") + " --backend cpu -o " + quoted(dir + "/bad.png"),
+        dir);
+    CHECK(bad.exitCode == 1);
+    CHECK(bad.err.rfind("eikon: ", 0) == 0);
+    CHECK(bad.err.find("surface_slope") != std::string::npos);
+    CHECK(bad.err.find("needs \"fresnel\": true") != std::string::npos);
+    CHECK(std::count(bad.err.begin(), bad.err.end(), '\n') == 1);
 }
 
 TEST_CASE("a light that misses the volume: one warning naming it, a dark picture, exit 0",

@@ -48,6 +48,14 @@ struct PhotonScene {
         octree = computeOctreeCpu(setup, gradient, octreeSettings, {&field});
     }
 
+    // The material's index is graded (a GRIN lens, a Luneburg lens): its edge is no sharp surface
+    // and reflects nothing (MaterialSpec::fresnel).
+    void markGraded() {
+        scene.materials[0].fresnel = false;
+        setup = makeViewSetup(scene, field.volume,
+                              makeCameraFrame(scene.camera, field.volume.bounds, 4, 4));
+    }
+
     static LightSpec directionalLight(glm::vec3 direction, glm::vec3 color) {
         LightSpec light;
         light.type = LightType::Directional;

@@ -48,10 +48,21 @@ void FixedDepositsCpu::finish(int state, glm::vec3 left, glm::vec3 lost, bool pa
     }
 }
 
-void FixedDepositsCpu::addRemoved(glm::vec3 power) {
+namespace {
+void addFixed(std::atomic<int64_t> (&bins)[3], glm::vec3 power, glm::dvec3 scale) {
     for (int c = 0; c < 3; ++c)
-        totals_.removed[c].fetch_add(shared::PhotonKernelCpu::toFixed(power[c], totalScale_[c]),
-                                     std::memory_order_relaxed);
+        bins[c].fetch_add(shared::PhotonKernelCpu::toFixed(power[c], scale[c]),
+                          std::memory_order_relaxed);
+}
+}  // namespace
+
+void FixedDepositsCpu::addRemoved(glm::vec3 power) {
+    addFixed(totals_.removed, power, totalScale_);
+}
+
+void FixedDepositsCpu::addReflected(glm::vec3 power) {
+    if (power == glm::vec3(0.0f)) return;
+    addFixed(totals_.reflected, power, totalScale_);
 }
 
 void FixedDepositsCpu::readTotals(PhotonTotals& totals) const {
@@ -61,6 +72,7 @@ void FixedDepositsCpu::readTotals(PhotonTotals& totals) const {
         totals.dropped[c] = fromFixedPoint(totals_.dropped[c].load(), totalScale_[c]);
         totals.received[c] = fromFixedPoint(totals_.received[c].load(), totalScale_[c]);
         totals.removed[c] = fromFixedPoint(totals_.removed[c].load(), totalScale_[c]);
+        totals.reflected[c] = fromFixedPoint(totals_.reflected[c].load(), totalScale_[c]);
     }
 }
 

@@ -30,6 +30,8 @@ public:
     void finish(int state, glm::vec3 left, glm::vec3 lost, bool passesPowerOn = false);
     // Of the dropped power, what a wavefront removed at a caustic (reported on its own).
     void addRemoved(glm::vec3 power);
+    // Power reflected at surfaces (Fresnel) and not followed: a bin of its own.
+    void addReflected(glm::vec3 power);
     void addSteps(int64_t steps) { totals_.steps.fetch_add(steps, std::memory_order_relaxed); }
     void addCut() { totals_.cut.fetch_add(1, std::memory_order_relaxed); }
 

@@ -66,7 +66,8 @@ struct FixedTotals {
     std::atomic<int64_t> extinguished[3] = {};
     std::atomic<int64_t> dropped[3] = {};
     std::atomic<int64_t> received[3] = {};
-    std::atomic<int64_t> removed[3] = {};  // of dropped
+    std::atomic<int64_t> removed[3] = {};    // of dropped
+    std::atomic<int64_t> reflected[3] = {};  // at surfaces (Fresnel), not followed
     std::atomic<int64_t> steps{0};
     std::atomic<int64_t> cut{0};
 };

@@ -66,6 +66,7 @@ struct PhotonTotals {
     glm::dvec3 dropped{0.0};       // left in photons removed below the threshold or cut
     glm::dvec3 received{0.0};      // carried onto a receiver (front or back face)
     glm::dvec3 removed{0.0};       // of dropped: wavefront patches removed at caustics
+    glm::dvec3 reflected{0.0};     // reflected at surfaces (Fresnel) and not followed
 };
 
 struct PhotonResultCpu {

@@ -65,10 +65,11 @@ WavefrontPlan planWavefronts(const ViewSetup& setup, const WavefrontSettings& se
     return plan;
 }
 
-std::vector<shared::GpuWavefrontPatch> generatePatchesCpu(const ViewSetup& setup,
-                                                          const RefractionVolumeCpu& gradient,
-                                                          const WavefrontSettings& settings) {
+std::vector<shared::GpuWavefrontPatch> generatePatchesCpu(
+    const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
+    const RefractionVolumeCpu& gradient, const WavefrontSettings& settings) {
     shared::WavefrontKernelCpu kernel{{{setup.params}}};
+    for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
     kernel.gradient = gradient.data();
     const WavefrontPlan plan = planWavefronts(setup, settings);
     std::vector<shared::GpuWavefrontPatch> patches(plan.patches);
@@ -98,7 +99,7 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
     // The starting patches; the emitted power, summed in index order, sets the fixed-point scales
     // before anything is deposited (as for photons).
     const std::vector<shared::GpuWavefrontPatch> roots =
-        generatePatchesCpu(setup, gradient, settings);
+        generatePatchesCpu(setup, slotGrids, gradient, settings);
     warnLightsMissingVolume(setup, plan.lights,
                             [&](size_t i) { return int(roots[i].state.x) == EK_PHOTON_ACTIVE; });
     std::vector<uint32_t> active;
@@ -117,8 +118,10 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
     // The power a patch that has ended leaves: escaped, received or dropped (cut, removed and
     // torn included); a split patch leaves only what it extinguished, its power going to its
     // children.
-    auto finish = [&](const shared::GpuWavefrontPatch& p, int state, glm::vec3 lost) {
+    auto finish = [&](const shared::GpuWavefrontPatch& p, int state, glm::vec3 lost,
+                      glm::vec3 reflected) {
         sums.finish(state, glm::vec3(p.power), lost, state == EK_PATCH_SPLIT);
+        sums.addReflected(reflected);
         if (state == EK_PHOTON_CUT) sums.addCut();
         if (state == EK_PATCH_REMOVED) {
             counters.removed.fetch_add(1, std::memory_order_relaxed);
@@ -131,6 +134,7 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
     const float splitVoxels = std::max(settings.splitVoxels, 1e-3f);
     const int maxLevel = std::max(settings.maxLevel, 0);
     const int samples = std::max(settings.depositSamples, 1);
+    const float surfaceSlope = kernel.anySurfaces() ? std::max(settings.surfaceSlope, 0.0f) : 0.0f;
     // Each starting patch's share of the patch budget, counting itself.
     const int64_t budget = std::max<int64_t>(1, int64_t(std::max(settings.maxPatches, 1)) /
                                                     std::max<int64_t>(int64_t(active.size()), 1));
@@ -147,6 +151,7 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
                     shared::GpuWavefrontPatch p = stack.back();
                     stack.pop_back();
                     glm::vec3 lost(0.0f);
+                    glm::vec3 reflected(0.0f);
                     int state = EK_PHOTON_ACTIVE;
                     bool wasRefused = false;  // counted once per patch, not per step
                     while (state == EK_PHOTON_ACTIVE) {
@@ -174,12 +179,12 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
                         }
                         const float sign = p.state.w;
                         state = kernel.patchStep(p, plan.dt, integrator, settings.atCaustic,
-                                                 samples, lost);
+                                                 samples, surfaceSlope, lost, reflected);
                         ++steps;
                         if (p.state.w != sign || state == EK_PATCH_REMOVED) ++crossings;
                     }
                     p.state.x = float(state);
-                    finish(p, state, lost);
+                    finish(p, state, lost, reflected);
                     if (keepPatches && state != EK_PATCH_SPLIT) kept[k].push_back(p);
                 }
                 sums.addSteps(steps);

@@ -49,6 +49,12 @@ WavefrontTransportSettings readWavefrontTransportSettings(const json::Value* sec
             caustic->choice({"keep", "remove"}) == "keep" ? EK_WAVEFRONT_KEEP : EK_WAVEFRONT_REMOVE;
     if (auto samples = object.optional("deposit_samples"))
         s.trace.depositSamples = static_cast<int>(samples->integer(1, kMaxDepositSamples));
+    if (auto fresnel = object.optional("fresnel"))
+        if (!fresnel->boolean()) s.trace.surfaceSlope = 0.0f;
+    if (auto slope = object.optional("surface_slope")) {
+        if (s.trace.surfaceSlope == 0.0f) slope->fail("\"surface_slope\" needs \"fresnel\": true");
+        s.trace.surfaceSlope = slope->floatNumber(Range::greaterThan(0.0));
+    }
     if (auto integrator = object.optional("integrator")) {
         const std::string name = integrator->choice(wavefrontIntegratorNames());
         s.trace.integrator = name == "euler"      ? WavefrontIntegrator::Euler
@@ -87,7 +93,7 @@ std::vector<unsigned char> WavefrontTransport::cacheKey(
     std::vector<unsigned char> key = transportInputsKey(setup, slotGrids);
     appendReceiverMapsKey(setup, key);  // patches stop on receivers and fill their maps
     // Every member is 4 bytes: the struct has no padding to carry stale bytes into the key.
-    static_assert(sizeof(WavefrontSettings) == 10 * 4,
+    static_assert(sizeof(WavefrontSettings) == 11 * 4,
                   "WavefrontSettings gained padding or a member");
     appendBytes(key, &settings_.trace, sizeof(settings_.trace));
     return key;
@@ -126,7 +132,8 @@ TransportOutputCpu WavefrontTransport::outputCpu() const {
 
 std::optional<EnergyBalance> WavefrontTransport::energy() const {
     const PhotonTotals& t = cpu_.totals;
-    return EnergyBalance{t.emitted, t.extinguished, t.escaped, t.dropped, t.received, t.removed};
+    return EnergyBalance{t.emitted,  t.extinguished, t.escaped,  t.dropped,
+                         t.received, t.removed,      t.reflected};
 }
 
 }  // namespace eikon
