@@ -203,10 +203,6 @@ GpuWavefrontPatch patchQuarter(GpuWavefrontPatch p, int k) {
     patchPointAt(p, a0 + 0.5f, b0 + 0.5f, c.corner[2], c.velocity[2]);
     patchPointAt(p, a0, b0 + 0.5f, c.corner[3], c.velocity[3]);
     c.state = vec4(float(EK_PHOTON_ACTIVE), p.state.y, p.state.z + 1.0f, p.state.w);
-    // The walk goes on from the child's own centroid (a crossing under way stays under way).
-    const vec3 centre = patchCentroid(c);
-    c.surface.x = surfaceIndexAt(worldToVolumeIndex(centre));
-    c.surface.z = wavefrontIndexAt(centre).w;
     return c;
 }
 
@@ -225,6 +221,11 @@ GpuWavefrontPatch patchChild(GpuWavefrontPatch p, int k) {
     for (int q = 0; q < k; ++q) given += p.power * (total > 0.0f ? areas[q] / total : 0.25f);
     c.power = k == 3 ? p.power - given : p.power * (total > 0.0f ? areas[k] / total : 0.25f);
     c.power = max(c.power, vec4(0.0f));
+    // The walk across surfaces goes on from the child's own centroid (a crossing under way stays
+    // under way); only for the child kept, not the quarters measured for their areas.
+    const vec3 centre = patchCentroid(c);
+    c.surface.x = surfaceIndexAt(worldToVolumeIndex(centre));
+    c.surface.z = wavefrontIndexAt(centre).w;
     return c;
 }
 
