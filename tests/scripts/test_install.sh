@@ -21,14 +21,20 @@ ls "$TMP"/prefix/lib*/cmake/Eikon/EikonConfig.cmake > /dev/null
 cmake -S "$ROOT/examples/cpp" -B "$TMP/example" -DCMAKE_PREFIX_PATH="$TMP/prefix" \
     -DCMAKE_BUILD_TYPE=Release > "$TMP/configure.log" || { cat "$TMP/configure.log"; exit 1; }
 cmake --build "$TMP/example" -j 2 > "$TMP/build.log" || { cat "$TMP/build.log"; exit 1; }
-ldd "$TMP/example/render_regression_test" | grep -q "$TMP/prefix/.*libeikon.so" \
-    || { echo "test_install: the example does not link the installed libeikon.so" >&2; exit 1; }
+# ldd's output is captured, not piped into `grep -q`: grep -q exits at the first match, and under
+# pipefail the SIGPIPE that ldd may then get fails the check (it did, once, on CI).
+links=$(ldd "$TMP/example/render_regression_test")
+grep -q "$TMP/prefix/.*libeikon.so" <<< "$links" \
+    || { echo "test_install: the example does not link the installed libeikon.so:" \
+        "$(grep libeikon <<< "$links" || echo none)" >&2; exit 1; }
 EIKON_SHADER_DIR="$TMP/prefix/share/eikon/shaders" "$TMP/example/render_regression_test"
 
 if ls "$BUILD"/python/eikon*.so > /dev/null 2>&1; then
     module=$(ls "$TMP"/prefix/lib*/python3*/dist-packages/eikon*.so)
-    ldd "$module" | grep -q "$TMP/prefix/.*libeikon.so" \
-        || { echo "test_install: the Python module does not find the installed libeikon.so" >&2; exit 1; }
+    links=$(ldd "$module")
+    grep -q "$TMP/prefix/.*libeikon.so" <<< "$links" \
+        || { echo "test_install: the Python module does not find the installed libeikon.so:" \
+            "$(grep libeikon <<< "$links" || echo none)" >&2; exit 1; }
     PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c "
 import eikon, sys
 assert eikon.__file__.startswith('$TMP/prefix'), eikon.__file__

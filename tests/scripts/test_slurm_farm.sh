@@ -102,7 +102,7 @@ wait_for_jobs() {  # until the queue is empty (or only jobs that can never run a
         local left
         left=$(squeue -h -o "%i %r" 2>/dev/null || true)
         [ -z "$left" ] && return 0
-        if echo "$left" | grep -q DependencyNeverSatisfied; then
+        if grep -q DependencyNeverSatisfied <<< "$left"; then
             echo "$left" | awk '/DependencyNeverSatisfied/ {print $1}' | xargs -r scancel
         fi
         sleep 0.2
