@@ -564,6 +564,11 @@ RenderSettings readRender(const Value& value) {
     if (auto cutoff = object.optional("min_transmittance")) {
         render.minTransmittance = cutoff->floatNumber(Range::closedOpen(0.0, 1.0));
     }
+    if (auto fresnel = object.optional("fresnel")) render.fresnel = fresnel->boolean();
+    if (auto slope = object.optional("surface_slope")) {
+        if (!render.fresnel) slope->fail("\"surface_slope\" needs \"fresnel\": true");
+        render.surfaceSlope = slope->floatNumber(Range::greaterThan(0.0));
+    }
     if (auto exposure = object.optional("exposure")) render.exposure = exposure->floatNumber();
     if (auto curve = object.optional("tone_map")) {
         render.toneCurve =

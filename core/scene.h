@@ -313,7 +313,13 @@ struct RenderSettings {
     // (BENCHMARKS.md, curved view rays).
     RayIntegrator integrator = RayIntegrator::Verlet;
     float minTransmittance = 1e-3f;  // a view ray stops when every channel is below this
-    float exposure = 0.0f;           // stops; the tone map multiplies by 2^exposure
+    // Fresnel at the sharp surfaces of refracting materials (MaterialSpec::fresnel) for view rays
+    // (shaders/shared/fresnel.h): where a curved view ray crosses one, its transmittance is scaled
+    // by 1 − R and R × the environment in the mirror direction is added (Ihrke et al. 2007 §5).
+    // A crossing is where n_surface changes by more than surfaceSlope per voxel.
+    bool fresnel = true;
+    float surfaceSlope = 0.01f;
+    float exposure = 0.0f;  // stops; the tone map multiplies by 2^exposure
     ToneCurve toneCurve = ToneCurve::Filmic;
     std::uint32_t seed = 0;
     // render.light_transport as written (compact JSON): the method and each method's settings

@@ -122,6 +122,7 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     shared::setShadowMode(p, EK_SHADOWS_VOLUME);  // the light-transport method's
     p.background = v4(scene.environment.color);
     shared::setMinTransmittance(p, scene.render.minTransmittance);
+    shared::setViewSurfaceSlope(p, scene.render.fresnel ? scene.render.surfaceSlope : 0.0f);
     packEnvironment(scene, environmentSize, p);
 
     for (size_t m = 0; m < scene.materials.size(); ++m) {

@@ -8,6 +8,7 @@
 #include "core/ray_integrator.h"
 
 #include "shaders/shared/gpu_types.h"
+#include "shaders/shared/material_index.h"  // at file scope: fresnel.h calls it
 
 EK_NAMESPACE_BEGIN
 
@@ -59,6 +60,7 @@ struct ViewKernelCpu : VolumeAccessCpu {
 
     // clang-format off
 #include "shaders/shared/environment.h"
+#include "shaders/shared/fresnel.h"
 #include "shaders/shared/view_march.h"
     // clang-format on
 };

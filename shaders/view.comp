@@ -12,6 +12,8 @@ layout(std430, binding = EK_SSBO_RECEIVER_MAP) readonly buffer ReceiverMapBlock 
 vec4 fetchReceiverTexel(int index) { return receiverTexels[index]; }
 
 #include "shared/environment.h"
+#include "shared/material_index.h"
+#include "shared/fresnel.h"
 #include "shared/view_march.h"
 
 layout(rgba32f, binding = EK_IMAGE_VIEW_OUTPUT) writeonly uniform image2D outImage;

@@ -13,9 +13,10 @@
 //    nothing, however steep its gradient is on the grid.
 //  - A crossing is a run of steps along each of which n_surface changes by more than the caller's
 //    threshold (a slope per voxel × the step's length in voxels). It starts with n1 = the total n
-//    where its first step started, gathers the ∇n it meets (the surface's normal, up to sign), and
-//    ends at the first step that changes n_surface less where |∇n| is below the slope too (out of
-//    the layer: a ray turning inside it moves along it for a step), with n2 = the total n there.
+//    at the last flat point before it (see surfaceWalkStep), gathers the ∇n it meets (the surface's
+//    normal, up to sign), and ends at the first step that changes n_surface less where |∇n| is
+//    below the slope too (out of the layer: a ray turning inside it moves along it for a step),
+//    with n2 = the total n there.
 //  - The angles come from the ray's momentum v = n dx/ds there: across a layer whose ∇n is along
 //    its normal N the tangential part |v − (v·N)N| = n sin θ is conserved exactly (Snell's law),
 //    even where the sampled path lets |v| drift from n (wavefront.h) and would tilt a direction
@@ -66,9 +67,17 @@ bool anySurfaces() {
 
 // What a ray carries across surfaces, at the start of a walk at a point of total index n and
 // surface index nSurface: x: n_surface at the last point; y: the total n where the current
-// crossing began, 0 outside a crossing; z: the total n at the last point; w: 0.
+// crossing began, 0 outside a crossing; z: the total n at the last point where n_surface was
+// flat (see surfaceWalkStep) or a crossing ended; w: 1 while a ray that starts on a surface (a
+// reflected one, from where its crossing began) has not yet left that surface's layer, else 0.
 vec4 surfaceWalkStart(float n, float nSurface) {
     return vec4(nSurface, 0.0f, n, 0.0f);
+}
+
+// The walk of a ray that starts in a surface's layer, going away from it: no crossing until it
+// is out (else it would find a crossing of the layer's tail, from wherever in it it started).
+vec4 surfaceWalkStartOnSurface(float n, float nSurface) {
+    return vec4(nSurface, 0.0f, n, 1.0f);
 }
 
 // One step of that walk, to where ∇n (xyz) and n (w) are g, n_surface is nSurface and the ray's
@@ -78,18 +87,30 @@ vec4 surfaceWalkStart(float n, float nSurface) {
 // where a crossing ends, else 1.
 float surfaceWalkStep(EK_INOUT(vec4) walk, EK_INOUT(vec4) normal, vec4 g, float nSurface, vec3 v,
                       float minChange, float maxSlope) {
-    const bool steep = abs(nSurface - walk.x) > minChange;
-    const float nBefore = walk.z;
+    const float change = abs(nSurface - walk.x);
+    const bool steep = change > minChange;
     walk.x = nSurface;
-    walk.z = g.w;
+    if (walk.w != 0.0f) {  // still leaving the surface it started on
+        if (steep || length(vec3(g)) > maxSlope) return 1.0f;
+        walk.w = 0.0f;
+        walk.z = g.w;
+        return 1.0f;
+    }
     if (steep) {
         if (walk.y == 0.0f) {
-            walk.y = nBefore;
+            walk.y = walk.z;
             normal = vec4(0.0f);
         }
         normal += vec4(vec3(g), 0.0f);
         return 1.0f;
     }
+    // A step in the tail of a surface's layer changes n_surface by less than minChange but more
+    // than nothing: the n where the next crossing begins is taken where it is flat, n_surface not
+    // changing or ∇n below maxSlope (as where a crossing ends), else a ray meeting the layer's
+    // tail a step before its steep part would enter glass from n = 1.005 (measured: R(60°) 3e-3
+    // low on view rays). Not changing alone is flat, so that n1 follows a graded medium (hot air)
+    // around a glass.
+    if (change == 0.0f || length(vec3(g)) <= maxSlope) walk.z = g.w;
     if (walk.y == 0.0f) return 1.0f;
     if (length(vec3(g)) > maxSlope) {  // still in the layer
         normal += vec4(vec3(g), 0.0f);
@@ -97,6 +118,7 @@ float surfaceWalkStep(EK_INOUT(vec4) walk, EK_INOUT(vec4) normal, vec4 g, float 
     }
     const float n1 = walk.y;
     walk.y = 0.0f;
+    walk.z = g.w;  // out of the layer: a crossing right after this one begins here
     const float nLow = min(n1, g.w);
     const float nHigh = max(n1, g.w);
     const float size = length(vec3(normal));
@@ -105,4 +127,18 @@ float surfaceWalkStep(EK_INOUT(vec4) walk, EK_INOUT(vec4) normal, vec4 g, float 
     const float sin2Low = tangential2 / (nLow * nLow);
     if (sin2Low >= 1.0f) return 0.0f;  // grazing on the lower side: all reflected
     return 1.0f - fresnelReflectance(nLow, nHigh, sqrt(1.0f - sin2Low));
+}
+
+// The unit direction a ray that has just crossed a surface would have taken had it been reflected
+// there: back on the side it came from (index n1), with the tangential part of its momentum v
+// (conserved, as above) and the normal part reversed. normalSum: the ∇n gathered over the
+// crossing (surfaceWalkStep's `normal`), whose direction is the surface's normal up to sign.
+vec3 surfaceMirrorDirection(vec3 v, vec3 normalSum, float n1) {
+    const float size = length(normalSum);
+    if (!(size > 0.0f)) return -normalize(v);
+    const vec3 normal = normalSum / size;
+    const float along = dot(v, normal);
+    const vec3 tangential = v - along * normal;
+    const float across = sqrt(max(n1 * n1 - dot(tangential, tangential), 0.0f));
+    return normalize(tangential - (along >= 0.0f ? across : -across) * normal);
 }

@@ -75,15 +75,17 @@ struct GpuReceiver {
 
 // Everything the viewing pass needs besides the field textures.
 struct GpuViewParams {
-    vec4 cameraOrigin;   // xyz; w: tan(horizontal fov / 2) (tanHalfFovX)
-    vec4 cameraRight;    // xyz unit; w: image aspect, width / height (imageAspect)
-    vec4 cameraUp;       // xyz unit
-    vec4 cameraForward;  // xyz unit
-    vec4 volumeMin;      // xyz world; w: view step, scene units (viewStep)
-    vec4 volumeMax;      // xyz world; w: shadow step, scene units (shadowStep)
-    ivec4 resolution;    // xyz voxels; w: material count (materialCount)
-    ivec4 image;         // x, y: pixels; z: light count (lightCount); w: EK_SHADOWS_* (shadowMode)
-    vec4 background;     // rgb radiance; w: a ray stops below it (minTransmittance)
+    vec4 cameraOrigin;  // xyz; w: tan(horizontal fov / 2) (tanHalfFovX)
+    vec4 cameraRight;   // xyz unit; w: image aspect, width / height (imageAspect)
+    vec4 cameraUp;      // xyz unit
+    // xyz unit; w: view rays cross a sharp surface (fresnel.h) where n_surface changes by more
+    // than this per voxel: Fresnel reflection toward the camera there; 0: none (viewSurfaceSlope)
+    vec4 cameraForward;
+    vec4 volumeMin;    // xyz world; w: view step, scene units (viewStep)
+    vec4 volumeMax;    // xyz world; w: shadow step, scene units (shadowStep)
+    ivec4 resolution;  // xyz voxels; w: material count (materialCount)
+    ivec4 image;       // x, y: pixels; z: light count (lightCount); w: EK_SHADOWS_* (shadowMode)
+    vec4 background;   // rgb radiance; w: a ray stops below it (minTransmittance)
     // The packed flags, read through the accessors below. x: 0 = straight view rays, 1 + EK_RAY_*
     // = curved through the ∇n volume with that integrator (curvedRays, viewIntegrator); y: 1 =
     // in-scattering read from the fluence volumes (readsFluence); z: bit l set = light l's light
@@ -150,6 +152,9 @@ inline float shadowStep(const GpuViewParams& p) {
 inline float minTransmittance(const GpuViewParams& p) {
     return p.background.w;  // a view ray stops below it
 }
+inline float viewSurfaceSlope(const GpuViewParams& p) {
+    return p.cameraForward.w;  // per voxel; 0: view rays see no Fresnel reflection
+}
 inline float tanHalfFovX(const GpuViewParams& p) {
     return p.cameraOrigin.w;
 }
@@ -188,6 +193,7 @@ inline float environmentRotationSin(const GpuViewParams& p) {
 #define viewStep(p) ((p).volumeMin.w)
 #define shadowStep(p) ((p).volumeMax.w)
 #define minTransmittance(p) ((p).background.w)
+#define viewSurfaceSlope(p) ((p).cameraForward.w)
 #define tanHalfFovX(p) ((p).cameraOrigin.w)
 #define imageAspect(p) ((p).cameraRight.w)
 #define environmentType(p) ((p).environment.x)
@@ -291,6 +297,9 @@ inline void setShadowMode(GpuViewParams& p, int mode) {
 }
 inline void setMinTransmittance(GpuViewParams& p, float t) {
     p.background.w = t;
+}
+inline void setViewSurfaceSlope(GpuViewParams& p, float perVoxel) {
+    p.cameraForward.w = perVoxel;
 }
 // Curved view rays stepped by `integrator` (EK_RAY_*), or straight ones (integrator < 0).
 inline void setCurvedRays(GpuViewParams& p, int integrator) {

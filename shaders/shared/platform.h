@@ -7,6 +7,8 @@
 //  - constants through EK_CONST (a #define-free `const` in GLSL, `static constexpr` in C++);
 //  - EK_PRECISE (GLSL `precise`) on results that must round as written on both sides: GLSL
 //    compilers may fuse a·b − c·d into an fma or reassociate sums, C++ (no -mfma) does not.
+//  - EK_FORCE_INLINE on a hot function the C++ compiler stopped inlining once its caller grew
+//    (accumulateStep into the view's ray loop: 13 % of the view pass); nothing in GLSL.
 // Kernel files (view_march.h) hold only functions: C++ includes them inside a struct body so
 // that the shader's globals (params, fetchVoxel) become members; GLSL includes them at file scope.
 #ifndef EIKON_SHARED_PLATFORM_H
@@ -19,6 +21,7 @@
 #define EK_INOUT(T) T&
 #define EK_CONST static constexpr
 #define EK_PRECISE
+#define EK_FORCE_INLINE [[gnu::always_inline]]
 #define EK_NAMESPACE_BEGIN \
     namespace eikon {      \
     namespace shared {     \
@@ -31,6 +34,7 @@
 #define EK_INOUT(T) inout T
 #define EK_CONST const
 #define EK_PRECISE precise
+#define EK_FORCE_INLINE
 #define EK_NAMESPACE_BEGIN
 #define EK_NAMESPACE_END
 #endif

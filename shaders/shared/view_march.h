@@ -4,7 +4,9 @@
 // taken from the light volume (light_volume.h) or, as reference, marched toward the light from
 // every sample (like vdb_render). Rays that leave the volume see environmentRadiance
 // (environment.h); rays that reach a receiver (receivers.h) stop there and see its diffuse
-// reflection. Needs optics.h, receivers.h, ray_equation.h, environment.h and, from the includer,
+// reflection. Curved rays crossing the sharp surface of a refracting material (fresnel.h) keep
+// 1 − R of their transmittance and see R of what lies in the mirror direction. Needs
+// optics.h, receivers.h, ray_equation.h, environment.h, fresnel.h and, from the includer,
 // `vec4 fetchReceiverTexel(int index)`: the irradiance (rgb) of a texel of the receiver map.
 
 // Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0.
@@ -88,8 +90,8 @@ vec3 receiverRadiance(int r, vec3 x, bool front) {
 // Adds one step of length s, with the medium's optics taken at its midpoint x (volume index
 // position p) and the ray travelling along unit `dir`. Returns false once the ray is opaque
 // (every channel below the scene's cut-off), with transmittance set to 0.
-bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
-                    EK_INOUT(vec3) transmittance) {
+EK_FORCE_INLINE bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
+                                    EK_INOUT(vec3) transmittance) {
     vec3 kappa = vec3(0.0f);
     vec3 source = vec3(0.0f);
     // Per-material scattering, kept for the phase function of each light below.
@@ -128,17 +130,56 @@ bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(vec3) radiance,
     return true;
 }
 
+// A reflection a view ray hands back to be traced through the volume: from origin (xyz) along
+// unit dir (xyz) with momentum dir × n (n in dir.w), seen with weight (rgb; 0: none).
+struct KeptReflection {
+    vec4 origin;
+    vec4 dir;
+    vec4 weight;
+};
+
 // Traces a curved ray from `entry` (on or inside the volume) with unit direction `dir`, one step
 // of the ray equation of length h per iteration (viewIntegrator, ray_equation.h), until it
-// leaves the volume or the medium goes degenerate; the last step is cut at the
-// face. Calls accumulateStep on every segment when `shade`. Returns the exit point; exitDir
-// gets the direction the ray leaves with.
-vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
-                    EK_INOUT(vec3) transmittance, EK_OUT(vec3) exitDir) {
+// leaves the volume or the medium goes degenerate; the last step is cut at the face. Calls
+// accumulateStep on every segment when `shade`. Returns the exit point; exitDir gets the
+// direction the ray leaves with.
+//
+// With `shade` and viewSurfaceSlope > 0 it reflects at the sharp surfaces it crosses (fresnel.h;
+// Ihrke et al. 2007 eqs. 2 and 5): once a crossing ends with transmittance factor t < 1, the
+// transmittance keeps t and the reflected part, transmittance × (1 − t), is seen along the mirror
+// direction. The first `keep` (0-2) such reflections are handed back in first and second, to be
+// traced through the volume from where their crossing began (on the side the ray came from):
+// what a glass in fog reflects, outside and inside, is mostly lit fog. Every other reflection sees
+// the environment in its direction (the paper's "first reflection" by environment mapping), a
+// reflection off the inside of glass its direction inside the glass. `onSurface` > 0: the ray
+// starts in a surface's layer (a kept reflection), with momentum dir × onSurface (the n on the
+// side it was reflected to: n where it starts, in the layer, would shorten its tangential part,
+// which Snell's law keeps), and finds no crossing before it is out of the layer.
+vec3 traceCurvedRayReflecting(vec3 entry, vec3 dir, bool shade, float onSurface, int keep,
+                              EK_INOUT(vec3) radiance, EK_INOUT(vec3) transmittance,
+                              EK_OUT(vec3) exitDir, EK_OUT(KeptReflection) first,
+                              EK_OUT(KeptReflection) second) {
     const float h = viewStep(params);
     vec3 x = entry;
-    vec3 v = dir * sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(x)).w;
+    const vec4 gEntry = sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(x));
+    vec3 v = dir * (onSurface > 0.0f ? onSurface : gEntry.w);
     exitDir = dir;
+    first.weight = second.weight = vec4(0.0f);
+    first.origin = second.origin = first.dir = second.dir = vec4(0.0f);
+    int kept = 0;
+    // The walk across sharp surfaces (fresnel.h), its slope per scene unit.
+    const vec3 voxel = volumeVoxelSize();
+    const float surfaceSlope = shade && anySurfaces()
+                                   ? viewSurfaceSlope(params) / min(voxel.x, min(voxel.y, voxel.z))
+                                   : 0.0f;
+    vec4 walk = vec4(0.0f);
+    if (surfaceSlope > 0.0f) {
+        const float nSurface = surfaceIndexAt(worldToVolumeIndex(x));
+        walk = onSurface > 0.0f ? surfaceWalkStartOnSurface(gEntry.w, nSurface)
+                                : surfaceWalkStart(gEntry.w, nSurface);
+    }
+    vec4 surfaceNormal = vec4(0.0f);
+    vec3 crossingStart = x;
     // A ray trapped by total internal reflection would circle forever: bound the path at 16
     // crossings of the volume.
     const ivec3 res = volumeResolution();
@@ -175,6 +216,32 @@ vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
                                 transmittance))
                 shade = false;  // opaque: keep tracing only for the exit point
         }
+        if (shade && surfaceSlope > 0.0f && s > 0.0f) {
+            const vec3 q = worldToVolumeIndex(next);
+            const float n1 = walk.y;  // where a crossing ending here began
+            const float transmitted =
+                surfaceWalkStep(walk, surfaceNormal, sampleVolume(EK_GRADIENT_SLOT, q),
+                                surfaceIndexAt(q), vNext, surfaceSlope * s, surfaceSlope);
+            if (n1 == 0.0f && walk.y != 0.0f) crossingStart = x;  // a crossing began this step
+            if (transmitted < 1.0f) {
+                const vec3 weight = transmittance * (1.0f - transmitted);
+                const vec3 mirror = surfaceMirrorDirection(vNext, vec3(surfaceNormal), n1);
+                if (kept < keep) {
+                    KeptReflection r;
+                    r.origin = vec4(crossingStart, 0.0f);
+                    r.dir = vec4(mirror, n1);
+                    r.weight = vec4(weight, 0.0f);
+                    if (kept == 0)
+                        first = r;
+                    else
+                        second = r;
+                    ++kept;
+                } else {
+                    radiance += weight * environmentRadiance(mirror);
+                }
+                transmittance *= transmitted;
+            }
+        }
         x = next;
         v = vNext;
         exitDir = normalize(v);
@@ -188,6 +255,26 @@ vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
     return x;
 }
 
+// traceCurvedRayReflecting with every reflection seeing the environment.
+vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
+                    EK_INOUT(vec3) transmittance, EK_OUT(vec3) exitDir) {
+    KeptReflection unusedFirst, unusedSecond;
+    return traceCurvedRayReflecting(entry, dir, shade, 0.0f, 0, radiance, transmittance, exitDir,
+                                    unusedFirst, unusedSecond);
+}
+
+// What a kept reflection shows: its ray traced through the volume, its own reflections seeing the
+// environment, then the environment where it leaves; × its weight.
+vec3 keptReflectionRadiance(KeptReflection r) {
+    vec3 radiance = vec3(0.0f);
+    vec3 transmittance = vec3(1.0f);
+    vec3 exitDir;
+    KeptReflection unusedFirst, unusedSecond;
+    traceCurvedRayReflecting(vec3(r.origin), vec3(r.dir), true, r.dir.w, 0, radiance, transmittance,
+                             exitDir, unusedFirst, unusedSecond);
+    return vec3(r.weight) * (radiance + transmittance * environmentRadiance(exitDir));
+}
+
 // Radiance reaching the camera along a ray, and the ray's transmittance through the volume.
 // Straight rays integrate exactly-clipped steps along t; curved rays (curvedRays) follow
 // the ray equation inside the volume, where n varies, and leave along their bent direction.
@@ -198,8 +285,15 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
     if (!(span.x < span.y)) return environmentRadiance(dir);
     if (curvedRays(params)) {
         vec3 exitDir;
-        traceCurvedRay(origin + dir * span.x, dir, true, radiance, transmittance, exitDir);
-        return radiance + transmittance * environmentRadiance(exitDir);
+        KeptReflection first, second;
+        traceCurvedRayReflecting(origin + dir * span.x, dir, true, 0.0f, 2, radiance, transmittance,
+                                 exitDir, first, second);
+        radiance += transmittance * environmentRadiance(exitDir);
+        if (first.weight.x + first.weight.y + first.weight.z > 0.0f)
+            radiance += keptReflectionRadiance(first);
+        if (second.weight.x + second.weight.y + second.weight.z > 0.0f)
+            radiance += keptReflectionRadiance(second);
+        return radiance;
     }
     const float h = viewStep(params);
     const int steps = min(int(ceil((span.y - span.x) / h)), EK_MAX_STEPS);

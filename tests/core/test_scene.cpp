@@ -530,6 +530,23 @@ TEST_CASE("a material's edge reflects (fresnel) unless it is hot air or marked g
     CHECK(f.message == "smoke.json:/materials/0/fresnel: expected true or false, got \"yes\"");
 }
 
+TEST_CASE("view rays reflect at sharp surfaces unless render.fresnel is false", "[scene]") {
+    const eikon::Scene plain = eikon::parseScene(sceneWith(R"("render": {})"), "smoke.json");
+    CHECK(plain.render.fresnel);
+    CHECK(plain.render.surfaceSlope == 0.01f);
+    const eikon::Scene steeper = eikon::parseScene(
+        sceneWith(R"("render": {"fresnel": true, "surface_slope": 0.05})"), "smoke.json");
+    CHECK(steeper.render.surfaceSlope == 0.05f);
+    CHECK_FALSE(eikon::parseScene(sceneWith(R"("render": {"fresnel": false})"), "smoke.json")
+                    .render.fresnel);
+    const Failure off =
+        failureOf(sceneWith(R"("render": {"fresnel": false, "surface_slope": 0.05})"));
+    CHECK(off.message ==
+          "smoke.json:/render/surface_slope: \"surface_slope\" needs \"fresnel\": true");
+    const Failure zero = failureOf(sceneWith(R"("render": {"surface_slope": 0})"));
+    CHECK(zero.message == "smoke.json:/render/surface_slope: expected a number > 0, got 0");
+}
+
 TEST_CASE("missing required keys are reported where they belong", "[scene]") {
     SECTION("no sources") {
         const Failure f = failureOf(R"({"materials": [{"name": "m"}]})");

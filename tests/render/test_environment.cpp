@@ -214,7 +214,8 @@ TEST_CASE("image environment: the GPU equals the CPU twin", "[environment]") {
     CHECK(relative < 1e-5);
 }
 
-TEST_CASE("image environment: a glass sphere shows the image behind it inverted", "[environment]") {
+TEST_CASE("image environment: a glass sphere shows the image behind it inverted, and reflects",
+          "[environment]") {
     // Red where d.x < 0, blue where d.x > 0, for every elevation (u < 0.5 and u ≥ 0.5).
     Image halves(32, 16);
     for (int y = 0; y < halves.height; ++y)
@@ -230,6 +231,12 @@ TEST_CASE("image environment: a glass sphere shows the image behind it inverted"
     setVolume(scene, glm::vec3(-1.0f), glm::vec3(1.0f), glm::ivec3(40));
     scene.environment.type = EnvironmentType::Image;
     scene.environment.file = file;
+    // The unpolarized Fresnel reflectance of n = 1.5 at 30°: (Rs + Rp) / 2 from
+    // sin(θi − θt)/sin(θi + θt) and tan(θi − θt)/tan(θi + θt), θt = asin(sin 30° / 1.5).
+    const double thetaT = std::asin(0.5 / 1.5), thetaI = std::acos(-1.0) / 6.0;
+    const double kReflectance30 =
+        0.5 * (std::pow(std::sin(thetaI - thetaT) / std::sin(thetaI + thetaT), 2) +
+               std::pow(std::tan(thetaI - thetaT) / std::tan(thetaI + thetaT), 2));
     // Looking along −z with +x to the right: without the sphere the left half is red, the right
     // half blue. A ball lens (n = 1.5, focal length 1.5 R from its centre) bends rays across the
     // axis, so through the sphere the left sees blue and the right red.
@@ -247,18 +254,27 @@ TEST_CASE("image environment: a glass sphere shows the image behind it inverted"
         const glm::vec4 leftOut = image.at(2, cy), rightOut = image.at(30, cy);
         INFO("through the sphere: left " << leftIn.r << " " << leftIn.b << ", right " << rightIn.r
                                          << " " << rightIn.b);
-        CHECK(leftIn.b > 0.99f);
-        CHECK(leftIn.r < 0.01f);
-        CHECK(rightIn.r > 0.99f);
-        CHECK(rightIn.b < 0.01f);
+        // What goes through shows the other half, 1 − R of it (R at the ray's entry, lost there;
+        // at the exit the inside reflection of the same R goes the other half's way too, so the
+        // channels add to 1): R(30°) = 0.0422 for a ray meeting the sphere at x = ±0.3 = R/2.
+        // The reflection off the front face, R, shows the same half.
+        CHECK(leftIn.b == Approx(1.0 - kReflectance30).margin(3e-3));
+        CHECK(leftIn.r == Approx(kReflectance30).margin(3e-3));
+        CHECK(rightIn.r == Approx(1.0 - kReflectance30).margin(3e-3));
+        CHECK(rightIn.b == Approx(kReflectance30).margin(3e-3));
+        CHECK(leftIn.r + leftIn.b == Approx(1.0).margin(1e-4));
+        CHECK(rightIn.r + rightIn.b == Approx(1.0).margin(1e-4));
         CHECK(leftOut.r > 0.99f);
         CHECK(rightOut.b > 0.99f);
         images[backend == Backend::Gpu ? 0 : 1] = image;
     }
     const double relative = maxRelativeDifference(images[0], images[1]);
-    // Measured on llvmpipe: 1.9e-6.
+    // Measured on llvmpipe: 1.9e-6 without Fresnel; 2.2e-4 with it, at the silhouette, where
+    // rays graze the sphere and R and the reflected ray's path change fast with the angle: the
+    // GPU's normalize and length (inverse square roots) leave the momentum 1e-7 from the CPU
+    // twin's, and there the CPU's own mirror-symmetric pixels differ by 2e-4 too.
     INFO("GPU vs CPU twin through the sphere: " << relative);
-    CHECK(relative < 1e-5);
+    CHECK(relative < 5e-4);
 }
 
 TEST_CASE("image environment: read once per change of path", "[environment]") {
