@@ -17,6 +17,7 @@
 #include "render/frame_renderer.h"
 #include "render/image.h"
 #include "render/volume_kernels_cpu.h"
+#include "support/fresnel_exact.h"
 #include "support/scene_builders.h"
 #include "support/test_paths.h"
 
@@ -231,12 +232,8 @@ TEST_CASE("image environment: a glass sphere shows the image behind it inverted,
     setVolume(scene, glm::vec3(-1.0f), glm::vec3(1.0f), glm::ivec3(40));
     scene.environment.type = EnvironmentType::Image;
     scene.environment.file = file;
-    // The unpolarized Fresnel reflectance of n = 1.5 at 30°: (Rs + Rp) / 2 from
-    // sin(θi − θt)/sin(θi + θt) and tan(θi − θt)/tan(θi + θt), θt = asin(sin 30° / 1.5).
-    const double thetaT = std::asin(0.5 / 1.5), thetaI = std::acos(-1.0) / 6.0;
-    const double kReflectance30 =
-        0.5 * (std::pow(std::sin(thetaI - thetaT) / std::sin(thetaI + thetaT), 2) +
-               std::pow(std::tan(thetaI - thetaT) / std::tan(thetaI + thetaT), 2));
+    // The unpolarized Fresnel reflectance of n = 1.5 at 30°.
+    const double kReflectance30 = eikon::test::fresnelExact(1.0, 1.5, std::acos(-1.0) / 6.0);
     // Looking along −z with +x to the right: without the sphere the left half is red, the right
     // half blue. A ball lens (n = 1.5, focal length 1.5 R from its centre) bends rays across the
     // axis, so through the sphere the left sees blue and the right red.

@@ -21,7 +21,10 @@
 #include "render/view_params.h"
 #include "render/volume_kernels_cpu.h"
 
+#include "support/fresnel_exact.h"
+
 using namespace eikon;
+using eikon::test::fresnelExact;
 
 namespace {
 
@@ -32,18 +35,6 @@ const RenderVolume kBox{{glm::vec3(-5.0f, -1.0f, -0.125f), glm::vec3(5.0f, 1.0f,
                         glm::ivec3(160, 32, 4)};
 const glm::vec3 kSky(0.0f, 0.0f, 1.0f);
 const glm::vec3 kGround(1.0f, 0.0f, 0.0f);
-
-// The unpolarized reflectance from n1 into n2 at incidence θi, in double, from Snell's law and
-// Fresnel's equations in their sine and tangent forms.
-double fresnelExact(double n1, double n2, double thetaI) {
-    if (thetaI == 0.0) return std::pow((n1 - n2) / (n1 + n2), 2);
-    const double sinT = n1 / n2 * std::sin(thetaI);
-    if (sinT >= 1.0) return 1.0;
-    const double thetaT = std::asin(sinT);
-    const double rs = std::sin(thetaI - thetaT) / std::sin(thetaI + thetaT);
-    const double rp = std::tan(thetaI - thetaT) / std::tan(thetaI + thetaT);
-    return 0.5 * (rs * rs + rp * rp);
-}
 
 // How the glass field rises from 0 to 1 across its face, over `width` scene units centred on it.
 enum class Rim { Linear, Smooth };

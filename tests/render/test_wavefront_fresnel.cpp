@@ -11,28 +11,18 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "support/fresnel_exact.h"
 #include "support/photon_scene.h"
 #include "support/wavefront_test_kernel.h"
 
 using namespace eikon;
+using eikon::test::fresnelExact;
 using eikon::test::kernelFor;
 using eikon::test::PhotonScene;
 
 namespace {
 
 constexpr double kGlass = 1.5;
-
-// The unpolarized reflectance from n1 into n2 at incidence θi, in double, by Snell's law and
-// Fresnel's equations in their sine and tangent forms (not the cosine form fresnel.h uses).
-double fresnelExact(double n1, double n2, double thetaI) {
-    if (thetaI == 0.0) return std::pow((n1 - n2) / (n1 + n2), 2);
-    const double sinT = n1 / n2 * std::sin(thetaI);
-    if (sinT >= 1.0) return 1.0;
-    const double thetaT = std::asin(sinT);
-    const double rs = std::sin(thetaI - thetaT) / std::sin(thetaI + thetaT);
-    const double rp = std::tan(thetaI - thetaT) / std::tan(thetaI + thetaT);
-    return 0.5 * (rs * rs + rp * rp);
-}
 
 // A glass field f(y) (n = 1 + 0.5 f) with a two-voxel linear rim at each face.
 float slab(float y, float top, float bottom, float rim) {
