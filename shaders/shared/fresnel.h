@@ -27,8 +27,8 @@
 //    to 1 over 80°-90° outside but over 41.0°-41.8° inside).
 //  - A ray that turns back inside the smeared surface (total internal reflection) ends its
 //    crossing at the n it started from: R(n, n) = 0, and all its light goes on, reflected.
-// The light reflected at the surface is not followed (the paper does not either); the caller
-// counts it.
+// What becomes of the reflected part is the caller's: the wavefront counts it without following
+// it (as the paper), view rays look along surfaceMirrorDirection (view_march.h).
 
 // R for unpolarized light from index n1 into n2 at incidence cos θ1 = cosI (its sign ignored):
 // the mean of the s and p reflectances (Born & Wolf), exact, not Schlick's approximation. 1 past
