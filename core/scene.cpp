@@ -20,6 +20,7 @@
 #include "core/json_reader.h"
 #include "core/procedural.h"
 #include "core/scene_animation.h"
+#include "core/scene_dispersion.h"
 #include "core/scene_helpers.h"
 #include "core/scene_memory.h"
 #include "core/scene_meshes.h"
@@ -379,6 +380,7 @@ MaterialSpec readMaterial(const Value& value) {
     } else if (auto t = object.optional("ambient_kelvin")) {
         t->fail("\"ambient_kelvin\" needs \"gladstone_dale\"");
     }
+    scene_detail::readDispersion(object, material, ior.has_value());
     material.fresnel = material.gladstoneDale == 0.0f;
     if (auto fresnel = object.optional("fresnel")) material.fresnel = fresnel->boolean();
     object.finish();

@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/bounds.h"
+#include "core/dispersion.h"
 #include "core/ray_integrator.h"
 #include "core/simulation_spec.h"
 
@@ -113,7 +114,12 @@ struct MaterialSpec {
     // hot air), which reflects nothing however steep its gradient is on the grid. The parser
     // makes it false for Gladstone–Dale materials.
     bool fresnel = true;
+    // Dispersion (core/dispersion.h): ior is n_d, the green channel's index, and abbe the Abbe
+    // number V_d that parts red and blue from it; 0: n the same in every channel.
+    float abbe = 0.0f;
 
+    // n in the red, green and blue channels (ior in each without dispersion).
+    glm::vec3 channelIor() const { return channelIndices(ior, abbe); }
     // n − 1 per unit of the field at f = 0: ior − 1, or −gladstoneDale/ambientKelvin computed
     // directly (ior itself, a float next to 1, keeps only ~2 digits of a real air's 1e-6).
     float indexSlope() const {

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/file_kind.h"
+#include "core/scene_dispersion.h"
 #include "core/scene_helpers.h"
 
 namespace eikon {
@@ -304,7 +305,9 @@ MeshObjectSpec readMesh(const Value& value, const std::filesystem::path& sceneDi
     }
 
     optics.name = mesh.name;
-    if (auto ior = object.optional("ior")) optics.ior = ior->floatNumber(Range::atLeast(1.0));
+    const auto ior = object.optional("ior");
+    if (ior) optics.ior = ior->floatNumber(Range::atLeast(1.0));
+    scene_detail::readDispersion(object, optics, ior.has_value());
     if (auto a = object.optional("absorption")) optics.absorption = a->vec3(Range::atLeast(0.0));
     if (auto s = object.optional("scattering")) optics.scattering = s->vec3(Range::atLeast(0.0));
     if (auto g = object.optional("g")) optics.g = g->floatNumber(Range::open(-1.0, 1.0));
@@ -373,6 +376,7 @@ ParsedMeshes readMeshes(const Value& value, const std::filesystem::path& sceneDi
             index.name = mesh.name + ".n";
             index.field = fields.index;
             index.ior = optics.ior;
+            index.abbe = optics.abbe;
             out.materials.push_back(index);
         }
         out.meshes.push_back(std::move(mesh));
