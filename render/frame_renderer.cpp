@@ -87,6 +87,9 @@ std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
         values.push_back(shared::materialInverseAmbient(p.materials[m]));
         values.push_back(float(shared::materialSlot(p.materials[m])));
     }
+    // Dispersion's channel volumes are computed with the gradient (FrameRenderer::render).
+    for (const glm::vec3& slopes : setup.channelIndexSlopes)
+        values.insert(values.end(), {slopes.x, slopes.y, slopes.z});
     std::vector<unsigned char> key;
     appendBytes(key, values.data(), values.size() * sizeof(float));
     for (const DenseGrid* g : grids) appendBytes(key, &g->version, sizeof(g->version));
@@ -187,6 +190,8 @@ Image FrameRenderer::render(int frame) {
     // The octree is built on the ∇n volume's n: a method that needs it needs that volume too.
     const bool wantGradient = curved || (transportActive && (needs.gradient || needs.octree));
     const bool wantOctree = transportActive && needs.octree;
+    // Dispersion: view rays of each colour channel bend with its own n, through its ∇n volume.
+    const bool disperses = curved && dispersesView(setup);
     std::vector<unsigned char> refractionInputs;
     if (wantGradient) refractionInputs = gradientInputs(setup, slotGrids);
     const bool gradientChanged = wantGradient && refractionInputs != gradientInputs_;
@@ -202,13 +207,21 @@ Image FrameRenderer::render(int frame) {
             gradientCpu_ = computeIndexGradientCpu(setup, slotGrids);
             timer_->end();
         }
+        if (disperses && (gradientChanged || channelGradientsCpu_.red.empty())) {
+            timer_->begin("gradient");
+            channelGradientsCpu_ = computeChannelGradientsCpu(setup, slotGrids);
+            timer_->end();
+        } else if (!disperses) {
+            channelGradientsCpu_ = {};  // free what a dispersive scene before needed
+        }
         if (octreeChanged) {
             timer_->begin("octree");
             octreeCpu_ = computeOctreeCpu(setup, gradientCpu_, needs.octreeSettings, slotGrids);
             timer_->end();
         }
         if (transportChanged)
-            transport_->runCpu({setup, slotGrids, gradientCpu_, octreeCpu_, timer_.get()});
+            transport_->runCpu({setup, slotGrids, gradientCpu_, octreeCpu_, timer_.get(),
+                                disperses ? &channelGradientsCpu_ : nullptr});
     } else {
         timer_->begin("upload");
         textures_->update(slotGrids);
@@ -217,6 +230,9 @@ Image FrameRenderer::render(int frame) {
         if (gradientChanged || octreeChanged)
             refractionGpu_->compute(setup, *textures_, needs.octreeSettings, timer_.get(),
                                     wantOctree);
+        if (disperses && (gradientChanged || !refractionGpu_->channelGradientTexture(0)))
+            refractionGpu_->computeChannelGradients(setup, *textures_, *paramsBuffer_,
+                                                    timer_.get());
         if (transportChanged)
             transport_->runGpu({setup, *textures_, *refractionGpu_, timer_.get()});
     }
@@ -238,13 +254,20 @@ Image FrameRenderer::render(int frame) {
         static const std::vector<glm::vec4> noGradient;
         Image image = renderViewCpu(
             setup, slotGrids, transportActive ? transport_->outputCpu() : TransportOutputCpu{},
-            curved ? gradientCpu_ : noGradient, &environment);
+            curved ? gradientCpu_ : noGradient, &environment,
+            disperses ? &channelGradientsCpu_ : nullptr);
         timer_->end();
         return image;
     }
+    ViewDispersionGpu dispersion;
+    if (disperses) {
+        for (int c = 0; c < 3; ++c)
+            dispersion.gradientTextures[c] = refractionGpu_->channelGradientTexture(c);
+        dispersion.params = paramsBuffer_.get();
+    }
     return viewPass_->render(setup, *textures_, transportActive ? transport_.get() : nullptr,
                              curved ? refractionGpu_->gradientTexture() : 0u, timer_.get(),
-                             environment_->texture());
+                             environment_->texture(), disperses ? &dispersion : nullptr);
 }
 
 // The method in use keeps its output and its GPU resources while the scene asks for the same

@@ -120,6 +120,7 @@ private:
     std::unique_ptr<EnvironmentMap> environment_;
     std::unique_ptr<RefractionVolumesGpu> refractionGpu_;
     std::vector<glm::vec4> gradientCpu_;
+    ChannelGradientsCpu channelGradientsCpu_;  // dispersion's red and blue ∇n volumes
     std::vector<glm::vec4> octreeCpu_;
     TransportDevice device_;
     std::unique_ptr<LightTransport> transport_;

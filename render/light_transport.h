@@ -103,6 +103,9 @@ struct TransportInputsCpu {
     const RefractionVolumeCpu& gradient;  // empty unless needs().gradient
     const RefractionVolumeCpu& octree;    // empty unless needs().octree
     GpuStageTimer* timer;                 // the method times its own stages
+    // Under dispersion (dispersesView(setup)): the red and blue channels' ∇n volumes, `gradient`
+    // being the green one's; null otherwise.
+    const ChannelGradientsCpu* channelGradients = nullptr;
 };
 
 // One frame's inputs to a GPU run: the field textures are uploaded, the params SSBO bound at

@@ -19,6 +19,7 @@
 namespace eikon {
 
 class GpuStageTimer;
+class ParamsBuffer;
 class ShaderProgram;
 class VolumeTextures;
 
@@ -50,6 +51,13 @@ float octreeStepInScene(const ViewSetup& setup, float voxels);
 // CPU twins, parallel over voxels; results do not depend on the thread count.
 RefractionVolumeCpu computeIndexGradientCpu(const ViewSetup& setup,
                                             const std::vector<const DenseGrid*>& slotGrids);
+// Under dispersion (dispersesView(setup)): the red and blue channels' ∇n volumes, each from its
+// channel's indices (channelViewParams); the green channel's is computeIndexGradientCpu's.
+struct ChannelGradientsCpu {
+    RefractionVolumeCpu red, blue;
+};
+ChannelGradientsCpu computeChannelGradientsCpu(const ViewSetup& setup,
+                                               const std::vector<const DenseGrid*>& slotGrids);
 // From the gradient volume's n (w) and, for settings.kappaTolerance, the extinction of the field
 // volumes (slotGrids, as for computeIndexGradientCpu; none: κ ≡ 0).
 RefractionVolumeCpu computeOctreeCpu(const ViewSetup& setup, const RefractionVolumeCpu& gradient,
@@ -72,7 +80,16 @@ public:
                  const OctreeSettings& settings = {}, GpuStageTimer* timer = nullptr,
                  bool withOctree = true);
 
+    // Under dispersion (dispersesView(setup)), after compute: the red and blue channels' ∇n
+    // volumes, uploading each channel's params (channelViewParams) to `params` for its pass and
+    // setup.params again at the end. Timer stage "gradient".
+    void computeChannelGradients(const ViewSetup& setup, VolumeTextures& fields,
+                                 ParamsBuffer& params, GpuStageTimer* timer = nullptr);
+
     unsigned gradientTexture() const { return gradient_; }
+    // Channel 0, 1, 2 (red, green, blue): green is gradientTexture(), the others are
+    // computeChannelGradients'.
+    unsigned channelGradientTexture(int channel) const;
     unsigned octreeTexture() const { return octree_; }
     // Read back for tests (compared with the CPU twins).
     RefractionVolumeCpu downloadGradient() const;
@@ -80,7 +97,8 @@ public:
 
 private:
     void allocate(glm::ivec3 resolution);
-    void computeGradient(glm::ivec3 resolution);
+    void computeGradient(unsigned texture, glm::ivec3 resolution);
+    void deleteChannelGradients();
     void computeOctree(const ViewSetup& setup, const OctreeSettings& settings);
     RefractionVolumeCpu download(unsigned texture) const;
 
@@ -88,6 +106,7 @@ private:
     std::unique_ptr<ShaderProgram> minMaxProgram_;
     std::unique_ptr<ShaderProgram> labelProgram_;
     unsigned gradient_ = 0;
+    unsigned channelGradients_[2] = {0, 0};  // red, blue: dispersion only
     unsigned octree_ = 0;
     unsigned pyramid_ = 0;  // SSBO: every level's (n_min, n_max), see shaders/shared/octree.h
     glm::ivec3 resolution_{0};

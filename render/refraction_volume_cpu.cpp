@@ -112,6 +112,17 @@ RefractionVolumeCpu computeIndexGradientCpu(const ViewSetup& setup,
     return out;
 }
 
+ChannelGradientsCpu computeChannelGradientsCpu(const ViewSetup& setup,
+                                               const std::vector<const DenseGrid*>& slotGrids) {
+    ViewSetup channel = setup;
+    ChannelGradientsCpu out;
+    channel.params = channelViewParams(setup, 0);
+    out.red = computeIndexGradientCpu(channel, slotGrids);
+    channel.params = channelViewParams(setup, 2);
+    out.blue = computeIndexGradientCpu(channel, slotGrids);
+    return out;
+}
+
 RefractionVolumeCpu computeOctreeCpu(const ViewSetup& setup, const RefractionVolumeCpu& gradient,
                                      const OctreeSettings& settings,
                                      const std::vector<const DenseGrid*>& slotGrids) {

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "render/gpu_timer.h"
+#include "render/params_buffer.h"
 #include "render/refraction_volume.h"
 #include "render/shader_program.h"
 #include "render/volume_textures.h"
@@ -45,6 +46,13 @@ RefractionVolumesGpu::~RefractionVolumesGpu() {
     if (gradient_) glDeleteTextures(1, &gradient_);
     if (octree_) glDeleteTextures(1, &octree_);
     if (pyramid_) glDeleteBuffers(1, &pyramid_);
+    deleteChannelGradients();
+}
+
+void RefractionVolumesGpu::deleteChannelGradients() {
+    for (unsigned& texture : channelGradients_)
+        if (texture) glDeleteTextures(1, &texture);
+    channelGradients_[0] = channelGradients_[1] = 0;
 }
 
 void RefractionVolumesGpu::allocate(glm::ivec3 res) {
@@ -52,6 +60,7 @@ void RefractionVolumesGpu::allocate(glm::ivec3 res) {
     if (gradient_) glDeleteTextures(1, &gradient_);
     if (octree_) glDeleteTextures(1, &octree_);
     if (pyramid_) glDeleteBuffers(1, &pyramid_);
+    deleteChannelGradients();
     gradient_ = makeVolumeTexture(res);
     octree_ = makeVolumeTexture(res);
     const size_t nodes = octreePyramidNodeCount(res);
@@ -74,7 +83,7 @@ void RefractionVolumesGpu::compute(const ViewSetup& setup, VolumeTextures& field
     allocate(res);
     fields.bind();
     if (timer) timer->begin("gradient");
-    computeGradient(res);
+    computeGradient(gradient_, res);
     if (timer) timer->end();
     if (!withOctree) return;
     if (timer) timer->begin("octree");
@@ -82,9 +91,33 @@ void RefractionVolumesGpu::compute(const ViewSetup& setup, VolumeTextures& field
     if (timer) timer->end();
 }
 
-void RefractionVolumesGpu::computeGradient(glm::ivec3 res) {
+void RefractionVolumesGpu::computeChannelGradients(const ViewSetup& setup, VolumeTextures& fields,
+                                                   ParamsBuffer& params, GpuStageTimer* timer) {
+    const glm::ivec3 res(setup.params.resolution);
+    allocate(res);
+    // Made before the fields are bound: making a texture binds it, and then 0, to the active unit.
+    for (unsigned& texture : channelGradients_)
+        if (!texture) texture = makeVolumeTexture(res);
+    fields.bind();
+    if (timer) timer->begin("gradient");
+    for (int k = 0; k < 2; ++k) {
+        params.upload(channelViewParams(setup, k == 0 ? 0 : 2));
+        computeGradient(channelGradients_[k], res);
+    }
+    params.upload(setup.params);
+    if (timer) timer->end();
+    if (glGetError() != GL_NO_ERROR)
+        throw Error("refraction volumes", "the driver refused the red and blue channels' volumes");
+}
+
+unsigned RefractionVolumesGpu::channelGradientTexture(int channel) const {
+    if (channel == 1) return gradient_;
+    return channelGradients_[channel == 0 ? 0 : 1];
+}
+
+void RefractionVolumesGpu::computeGradient(unsigned texture, glm::ivec3 res) {
     gradientProgram_->use();
-    glBindImageTexture(EK_IMAGE_GRADIENT, gradient_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(EK_IMAGE_GRADIENT, texture, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatchCovering(res);
     // The pyramid's level 0 reads n through imageLoad; later passes may sample the texture.
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |

@@ -146,7 +146,26 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     p.pipeline = glm::ivec4(0);
     shared::setCurvedRays(p, refracts ? static_cast<int>(scene.render.integrator) : -1);
     packReceivers(scene, volume, p);
+    bool disperses = false;
+    for (const MaterialSpec& mat : scene.materials) disperses = disperses || mat.abbe > 0.0f;
+    if (refracts && disperses) {
+        for (const MaterialSpec& mat : scene.materials) {
+            // The green channel is the d line: ior − 1 as params has it, to the bit.
+            const glm::vec3 n = mat.channelIor();
+            setup.channelIndexSlopes.push_back(
+                mat.abbe > 0.0f ? glm::vec3(n.x - 1.0f, mat.indexSlope(), n.z - 1.0f)
+                                : glm::vec3(mat.indexSlope()));
+        }
+    }
     return setup;
+}
+
+shared::GpuViewParams channelViewParams(const ViewSetup& setup, int channel) {
+    shared::GpuViewParams p = setup.params;
+    for (size_t m = 0; m < setup.channelIndexSlopes.size(); ++m)
+        p.materials[m].emission.w = setup.channelIndexSlopes[m][channel];
+    p.cameraUp.w = float(channel + 1);
+    return p;
 }
 
 float smallestVoxelEdge(const shared::GpuViewParams& p) {

@@ -14,7 +14,19 @@ namespace eikon {
 struct ViewSetup {
     shared::GpuViewParams params{};
     std::vector<std::string> slotFields;  // slot -> field name, the textures to bind in order
+    // Dispersion (core/dispersion.h): per material, n − 1 per unit of its field in the red, green
+    // and blue channels, when any material of a scene with curved rays disperses; empty when none
+    // does. params holds the green channel's (the d line's, ior − 1).
+    std::vector<glm::vec3> channelIndexSlopes;
 };
+
+// Whether view rays trace each colour channel with its own n (channelViewParams).
+inline bool dispersesView(const ViewSetup& setup) {
+    return !setup.channelIndexSlopes.empty();
+}
+// setup.params for the rays of colour channel `channel` (0, 1, 2: red, green, blue) under
+// dispersion: every material's n − 1 that channel's, and viewChannel = channel.
+shared::GpuViewParams channelViewParams(const ViewSetup& setup, int channel);
 
 // environmentSize: the width and height of the environment image (render/environment_map.h)
 // when scene.environment asks for one. The light-transport method writes its own part

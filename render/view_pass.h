@@ -8,22 +8,36 @@
 #include "core/dense_grid.h"
 #include "render/image.h"
 #include "render/light_transport.h"
+#include "render/refraction_volume.h"
 #include "render/view_params.h"
 
 namespace eikon {
 
 class GpuStageTimer;
+class ParamsBuffer;
 class VolumeTextures;
 class ShaderProgram;
+
+// What the GPU pass needs under dispersion (dispersesView(setup) with curved rays): each
+// channel's ∇n volume (red, green, blue; render/refraction_volume.h channelGradientTexture) and
+// the params buffer, to which it uploads each channel's params (channelViewParams) in turn and
+// setup.params at the end.
+struct ViewDispersionGpu {
+    unsigned gradientTextures[3] = {0, 0, 0};
+    ParamsBuffer* params = nullptr;
+};
 
 // CPU twin: rows in parallel (TBB), each pixel independent, so the result does not depend on the
 // thread count. `light`: the light-transport method's output (render/light_transport.h), empty
 // when the setup reads none. `gradient` is the ∇n volume (render/refraction_volume.h) when
 // curvedRays(setup.params) asks for curved rays, else empty. `environment`: the environment image
-// when environmentType(params) asks for one.
+// when environmentType(params) asks for one. `channelGradients`: under dispersion
+// (dispersesView(setup) with curved rays) the red and blue channels' ∇n volumes, `gradient` being
+// the green one's; each channel is then traced on its own (three rays a pixel).
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient = {},
-                    const Image* environment = nullptr);
+                    const Image* environment = nullptr,
+                    const ChannelGradientsCpu* channelGradients = nullptr);
 
 // GPU pass; needs a current GL 4.3 context and the frame's parameters in the ParamsBuffer. Field
 // textures come from `textures` in slot order.
@@ -38,10 +52,12 @@ public:
     // (render/environment_map.h) when environmentType(setup.params) asks for one.
     Image render(const ViewSetup& setup, VolumeTextures& textures, const LightTransport* light,
                  unsigned gradientTexture, GpuStageTimer* timer = nullptr,
-                 unsigned environmentTexture = 0);
+                 unsigned environmentTexture = 0, const ViewDispersionGpu* dispersion = nullptr);
 
 private:
     std::unique_ptr<ShaderProgram> program_;
+    std::unique_ptr<ShaderProgram> perChannelProgram_;  // dispersion's, made when first needed
+    bool hardwareTrilinear_ = false;
     unsigned outputTexture_ = 0;
     int outputWidth_ = 0, outputHeight_ = 0;
 };

@@ -10,54 +10,85 @@ namespace eikon {
 
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient,
-                    const Image* environment) {
+                    const Image* environment, const ChannelGradientsCpu* channelGradients) {
     const shared::GpuViewParams& p = setup.params;
     if (slotGrids.size() != setup.slotFields.size())
         throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
                                            " field grids, got " + std::to_string(slotGrids.size()));
-    shared::ViewKernelCpu kernel{{p}};
     if (viewReadsLightTransmittance(setup) &&
         int(light.lightTransmittance.size()) != shared::lightCount(p))
         throw Error("view pass (CPU)", "the light volumes were not computed");
-    for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
-        kernel.lights[l] = light.lightTransmittance[l];
-    if (shared::curvedRays(p)) {
-        if (gradient.size() !=
-            size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z))
-            throw Error("view pass (CPU)", "curved rays need the gradient volume");
-        kernel.gradient = gradient.data();
-    }
+    const size_t voxels = size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z);
+    if (shared::curvedRays(p) && gradient.size() != voxels)
+        throw Error("view pass (CPU)", "curved rays need the gradient volume");
+    const bool dispersed = shared::curvedRays(p) && dispersesView(setup);
+    if (dispersed && (!channelGradients || channelGradients->red.size() != voxels ||
+                      channelGradients->blue.size() != voxels))
+        throw Error("view pass (CPU)",
+                    "dispersion needs the red and blue channels' gradient volumes");
     if (shared::readsFluence(p)) {
-        const size_t voxels =
-            size_t(p.resolution.x) * size_t(p.resolution.y) * size_t(p.resolution.z);
         if (!light.fluence || !light.direction || light.fluenceVoxels != voxels)
             throw Error("view pass (CPU)", "lighting through the fluence needs its volumes");
-        kernel.fluence = light.fluence;
-        kernel.fluenceDirection = light.direction;
         if (light.receiverTexels != receiverMapTexels(p))
             throw Error("view pass (CPU)", "the receiver map was not computed");
-        kernel.receiverMap = light.receiverMap;
     }
-    if (shared::environmentType(p) == EK_ENVIRONMENT_IMAGE) {
-        if (!environment || environment->width != shared::environmentWidth(p) ||
-            environment->height != shared::environmentHeight(p))
-            throw Error("view pass (CPU)", "the environment image was not loaded");
-        kernel.environment = environment->pixels.data();
-    }
+    if (shared::environmentType(p) == EK_ENVIRONMENT_IMAGE &&
+        (!environment || environment->width != shared::environmentWidth(p) ||
+         environment->height != shared::environmentHeight(p)))
+        throw Error("view pass (CPU)", "the environment image was not loaded");
     for (size_t s = 0; s < slotGrids.size(); ++s) {
         const glm::ivec3 res = slotGrids[s]->volume.resolution;
         if (res != glm::ivec3(p.resolution.x, p.resolution.y, p.resolution.z))
             throw Error("view pass (CPU)",
                         "field '" + slotGrids[s]->field + "' was resampled on a different volume");
-        kernel.fields[s] = slotGrids[s]->values.data();
     }
+    // Every kernel reads the same volumes; under dispersion each channel's its own ∇n.
+    const auto attach = [&](shared::ViewKernelCpu& kernel, const std::vector<glm::vec4>& grad) {
+        for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
+            kernel.lights[l] = light.lightTransmittance[l];
+        if (shared::curvedRays(p)) kernel.gradient = grad.data();
+        if (shared::readsFluence(p)) {
+            kernel.fluence = light.fluence;
+            kernel.fluenceDirection = light.direction;
+            kernel.receiverMap = light.receiverMap;
+        }
+        if (shared::environmentType(p) == EK_ENVIRONMENT_IMAGE)
+            kernel.environment = environment->pixels.data();
+        for (size_t s = 0; s < slotGrids.size(); ++s)
+            kernel.fields[s] = slotGrids[s]->values.data();
+    };
     Image image(p.image.x, p.image.y);
-    tbb::parallel_for(tbb::blocked_range<int>(0, image.height),
-                      [&](const tbb::blocked_range<int>& r) {
-                          for (int y = r.begin(); y != r.end(); ++y)
-                              for (int x = 0; x < image.width; ++x)
-                                  image.at(x, y) = kernel.renderPixel(x, y);
-                      });
+    const auto forEachRow = [&](const auto& row) {
+        tbb::parallel_for(tbb::blocked_range<int>(0, image.height),
+                          [&](const tbb::blocked_range<int>& r) {
+                              for (int y = r.begin(); y != r.end(); ++y) row(y);
+                          });
+    };
+    if (!dispersed) {
+        shared::ViewKernelCpu kernel{{p}};
+        attach(kernel, gradient);
+        forEachRow([&](int y) {
+            for (int x = 0; x < image.width; ++x) image.at(x, y) = kernel.renderPixel(x, y);
+        });
+        return image;
+    }
+    // Dispersion: each channel's rays bend with its own n (shaders/shared/view_march.h,
+    // renderPixelChannel), red, green, blue in turn as the GPU's three dispatches add them.
+    const shared::GpuViewParams red = channelViewParams(setup, 0);
+    const shared::GpuViewParams green = channelViewParams(setup, 1);
+    const shared::GpuViewParams blue = channelViewParams(setup, 2);
+    shared::ViewKernelCpu kernels[3] = {{{red}}, {{green}}, {{blue}}};
+    attach(kernels[0], channelGradients->red);
+    attach(kernels[1], gradient);
+    attach(kernels[2], channelGradients->blue);
+    forEachRow([&](int y) {
+        for (int x = 0; x < image.width; ++x) {
+            glm::vec4 pixel(0.0f);
+            for (shared::ViewKernelCpu& kernel : kernels)
+                pixel = kernel.renderPixelChannel(x, y, pixel);
+            image.at(x, y) = pixel;
+        }
+    });
     return image;
 }
 

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "render/environment_map.h"
 #include "render/gpu_timer.h"
+#include "render/params_buffer.h"
 #include "render/shader_program.h"
 #include "render/view_pass.h"
 #include "render/volume_textures.h"
@@ -10,10 +11,19 @@
 
 namespace eikon {
 
+namespace {
+
+std::unique_ptr<ShaderProgram> makeViewProgram(bool hardwareTrilinear, bool perChannel) {
+    std::vector<std::string> defines;
+    if (hardwareTrilinear) defines.push_back("EK_HARDWARE_TRILINEAR");
+    if (perChannel) defines.push_back("EK_VIEW_PER_CHANNEL");
+    return std::make_unique<ShaderProgram>(ShaderProgram::compute("view.comp", defines));
+}
+
+}  // namespace
+
 ViewPassGpu::ViewPassGpu(bool hardwareTrilinear)
-    : program_(std::make_unique<ShaderProgram>(ShaderProgram::compute(
-          "view.comp", hardwareTrilinear ? std::vector<std::string>{"EK_HARDWARE_TRILINEAR"}
-                                         : std::vector<std::string>{}))) {}
+    : program_(makeViewProgram(hardwareTrilinear, false)), hardwareTrilinear_(hardwareTrilinear) {}
 
 ViewPassGpu::~ViewPassGpu() {
     if (outputTexture_) glDeleteTextures(1, &outputTexture_);
@@ -21,7 +31,8 @@ ViewPassGpu::~ViewPassGpu() {
 
 Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
                           const LightTransport* light, unsigned gradientTexture,
-                          GpuStageTimer* timer, unsigned environmentTexture) {
+                          GpuStageTimer* timer, unsigned environmentTexture,
+                          const ViewDispersionGpu* dispersion) {
     const shared::GpuViewParams& p = setup.params;
     const int width = p.image.x, height = p.image.y;
     if (timer) timer->begin("view");
@@ -46,10 +57,32 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
     glActiveTexture(GL_TEXTURE0);
     if (shared::readsFluence(p) && !light)
         throw Error("view pass", "lighting through the fluence needs its volumes");
-    program_->use();
-    const auto local = program_->localSize();
-    glDispatchCompute(GLuint((width + local[0] - 1) / local[0]),
-                      GLuint((height + local[1] - 1) / local[1]), 1);
+    const auto dispatch = [&](ShaderProgram& program) {
+        program.use();
+        const auto local = program.localSize();
+        glDispatchCompute(GLuint((width + local[0] - 1) / local[0]),
+                          GLuint((height + local[1] - 1) / local[1]), 1);
+    };
+    if (shared::curvedRays(p) && dispersesView(setup)) {
+        // One dispatch per channel, each with its channel's n and ∇n volume, adding its channel
+        // to what the one before wrote (view.comp, EK_VIEW_PER_CHANNEL).
+        if (!dispersion || !dispersion->params)
+            throw Error("view pass", "dispersion needs each channel's gradient volume");
+        if (!perChannelProgram_) perChannelProgram_ = makeViewProgram(hardwareTrilinear_, true);
+        glBindImageTexture(EK_IMAGE_VIEW_OUTPUT, outputTexture_, 0, GL_FALSE, 0, GL_READ_WRITE,
+                           GL_RGBA32F);
+        for (int c = 0; c < 3; ++c) {
+            dispersion->params->upload(channelViewParams(setup, c));
+            glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
+            glBindTexture(GL_TEXTURE_3D, dispersion->gradientTextures[c]);
+            glActiveTexture(GL_TEXTURE0);
+            dispatch(*perChannelProgram_);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
+        dispersion->params->upload(p);
+    } else {
+        dispatch(*program_);
+    }
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
     if (timer) timer->end();
 

@@ -16,6 +16,7 @@ vec4 fetchReceiverTexel(int index) { return receiverTexels[index]; }
 #include "shared/fresnel.h"
 #include "shared/view_march.h"
 
+#ifndef EK_VIEW_PER_CHANNEL
 layout(rgba32f, binding = EK_IMAGE_VIEW_OUTPUT) writeonly uniform image2D outImage;
 
 void main() {
@@ -23,3 +24,16 @@ void main() {
     if (p.x >= params.image.x || p.y >= params.image.y) return;
     imageStore(outImage, p, renderPixel(p.x, p.y));
 }
+#else
+// Dispersion: one dispatch per colour channel (viewChannel(params)), each adding its channel to
+// the pixel the one before wrote (renderPixelChannel). A variant of its own, so that the pass
+// without dispersion compiles to the code it always had.
+layout(rgba32f, binding = EK_IMAGE_VIEW_OUTPUT) uniform image2D outImage;
+
+void main() {
+    const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (p.x >= params.image.x || p.y >= params.image.y) return;
+    const vec4 before = viewChannel(params) == 0 ? vec4(0.0f) : imageLoad(outImage, p);
+    imageStore(outImage, p, renderPixelChannel(p.x, p.y, before));
+}
+#endif

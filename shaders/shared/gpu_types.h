@@ -77,7 +77,9 @@ struct GpuReceiver {
 struct GpuViewParams {
     vec4 cameraOrigin;  // xyz; w: tan(horizontal fov / 2) (tanHalfFovX)
     vec4 cameraRight;   // xyz unit; w: image aspect, width / height (imageAspect)
-    vec4 cameraUp;      // xyz unit
+    // xyz unit; w: with dispersion, the colour channel this pass traces + 1 (each channel's rays
+    // bend with its own n, render/view_pass_*.cpp); 0: one ray for all three (viewChannel)
+    vec4 cameraUp;
     // xyz unit; w: view rays cross a sharp surface (fresnel.h) where n_surface changes by more
     // than this per voxel: Fresnel reflection toward the camera there; 0: none (viewSurfaceSlope)
     vec4 cameraForward;
@@ -155,6 +157,9 @@ inline float minTransmittance(const GpuViewParams& p) {
 inline float viewSurfaceSlope(const GpuViewParams& p) {
     return p.cameraForward.w;  // per voxel; 0: view rays see no Fresnel reflection
 }
+inline int viewChannel(const GpuViewParams& p) {
+    return int(p.cameraUp.w) - 1;  // 0, 1, 2: red, green, blue alone; −1: all at once
+}
 inline float tanHalfFovX(const GpuViewParams& p) {
     return p.cameraOrigin.w;
 }
@@ -194,6 +199,7 @@ inline float environmentRotationSin(const GpuViewParams& p) {
 #define shadowStep(p) ((p).volumeMax.w)
 #define minTransmittance(p) ((p).background.w)
 #define viewSurfaceSlope(p) ((p).cameraForward.w)
+#define viewChannel(p) (int((p).cameraUp.w) - 1)
 #define tanHalfFovX(p) ((p).cameraOrigin.w)
 #define imageAspect(p) ((p).cameraRight.w)
 #define environmentType(p) ((p).environment.x)

@@ -335,3 +335,18 @@ vec4 renderPixel(int px, int py) {
     const vec3 radiance = integrateViewRay(vec3(params.cameraOrigin), dir, transmittance);
     return vec4(radiance, (transmittance.x + transmittance.y + transmittance.z) / 3.0f);
 }
+
+// One channel of a pixel under dispersion (viewChannel(params) = c ≥ 0, params holding channel
+// c's refractive indices): the pixel so far (channels before c) with c's radiance and transmittance
+// added. Alpha sums the transmittances until the last channel divides: the same operations, in the
+// same order, as renderPixel's mean, so equal indices in every channel give renderPixel's bytes.
+vec4 renderPixelChannel(int px, int py, vec4 pixel) {
+    const int c = viewChannel(params);
+    const vec3 dir = pixelRayDirection(px, py);
+    vec3 transmittance;
+    const vec3 radiance = integrateViewRay(vec3(params.cameraOrigin), dir, transmittance);
+    pixel[c] = radiance[c];
+    pixel.w = c == 0 ? transmittance[c] : pixel.w + transmittance[c];
+    if (c == 2) pixel.w = pixel.w / 3.0f;
+    return pixel;
+}
