@@ -92,11 +92,15 @@ std::vector<shared::GpuWavefrontPatch> generatePatchesCpu(
     const RefractionVolumeCpu& gradient, const WavefrontSettings& settings = {});
 
 // Traces every light's wavefront through the media (slotGrids: the field volumes; gradient: the
-// ∇n volume). keepPatches: also return every final patch (tests).
+// ∇n volume). keepPatches: also return every final patch (tests). channelGradients: under
+// dispersion (dispersesView(setup)) the red and blue channels' ∇n volumes, `gradient` being the
+// green one's: each light then sends one wavefront per channel, carrying that channel's power
+// and bending with that channel's n, all three into the same sums.
 WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
                                       const std::vector<const DenseGrid*>& slotGrids,
                                       const RefractionVolumeCpu& gradient,
                                       const WavefrontSettings& settings = {},
-                                      bool keepPatches = false);
+                                      bool keepPatches = false,
+                                      const ChannelGradientsCpu* channelGradients = nullptr);
 
 }  // namespace eikon

@@ -2,12 +2,14 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "core/error.h"
 #include "render/transport/photons/fixed_deposits_cpu.h"
 #include "render/transport/photons/lights_missing_volume.h"
 #include "render/transport/wavefront/wavefront_tracing.h"
@@ -84,34 +86,86 @@ std::vector<shared::GpuWavefrontPatch> generatePatchesCpu(
     return patches;
 }
 
+namespace {
+
+// One wavefront per light, or under dispersion one per light and colour channel: the params its
+// kernel reads (the channel's n, the lights' power in that channel alone) and its ∇n volume.
+struct WavefrontPass {
+    shared::GpuViewParams params;
+    const RefractionVolumeCpu* gradient = nullptr;
+};
+
+std::vector<WavefrontPass> wavefrontPasses(const ViewSetup& setup,
+                                           const RefractionVolumeCpu& gradient,
+                                           const ChannelGradientsCpu* channelGradients) {
+    if (!channelGradients || !dispersesView(setup)) return {{setup.params, &gradient}};
+    if (channelGradients->red.size() != gradient.size() ||
+        channelGradients->blue.size() != gradient.size())
+        throw Error("wavefront", "dispersion needs the red and blue channels' gradient volumes");
+    const RefractionVolumeCpu* gradients[3] = {&channelGradients->red, &gradient,
+                                               &channelGradients->blue};
+    std::vector<WavefrontPass> passes;
+    for (int c = 0; c < 3; ++c) {
+        WavefrontPass pass{channelViewParams(setup, c), gradients[c]};
+        for (int l = 0; l < shared::lightCount(pass.params); ++l)
+            for (int k = 0; k < 3; ++k)
+                if (k != c) pass.params.lights[l].radiance[k] = 0.0f;
+        passes.push_back(pass);
+    }
+    return passes;
+}
+
+}  // namespace
+
 WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
                                       const std::vector<const DenseGrid*>& slotGrids,
                                       const RefractionVolumeCpu& gradient,
-                                      const WavefrontSettings& settings, bool keepPatches) {
-    shared::WavefrontKernelCpu kernel{{{setup.params}}};
-    for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
-    kernel.gradient = gradient.data();
+                                      const WavefrontSettings& settings, bool keepPatches,
+                                      const ChannelGradientsCpu* channelGradients) {
+    const std::vector<WavefrontPass> passes = wavefrontPasses(setup, gradient, channelGradients);
+    // One kernel per pass (a deque: the kernels hold their params by reference and must not move).
+    std::deque<shared::WavefrontKernelCpu> kernels;
+    for (const WavefrontPass& pass : passes) {
+        shared::WavefrontKernelCpu& kernel =
+            kernels.emplace_back(shared::WavefrontKernelCpu{{{pass.params}}});
+        for (size_t s = 0; s < slotGrids.size(); ++s)
+            kernel.fields[s] = slotGrids[s]->values.data();
+        kernel.gradient = pass.gradient->data();
+    }
 
     WavefrontResultCpu result;
     const WavefrontPlan plan = planWavefronts(setup, settings);
     result.resolution = plan.resolution;
 
-    // The starting patches; the emitted power, summed in index order, sets the fixed-point scales
-    // before anything is deposited (as for photons).
-    const std::vector<shared::GpuWavefrontPatch> roots =
-        generatePatchesCpu(setup, slotGrids, gradient, settings);
-    warnLightsMissingVolume(setup, plan.lights,
-                            [&](size_t i) { return int(roots[i].state.x) == EK_PHOTON_ACTIVE; });
+    // The starting patches, pass after pass; the emitted power, summed in index order, sets the
+    // fixed-point scales before anything is deposited (as for photons). Under dispersion each
+    // pass emits one channel, so the sums and scales are those of one pass carrying all three.
+    std::vector<shared::GpuWavefrontPatch> roots;
+    std::vector<uint8_t> rootPass;
+    for (size_t k = 0; k < passes.size(); ++k) {
+        ViewSetup passSetup = setup;
+        passSetup.params = passes[k].params;
+        const std::vector<shared::GpuWavefrontPatch> generated =
+            generatePatchesCpu(passSetup, slotGrids, *passes[k].gradient, settings);
+        if (k == 0)
+            warnLightsMissingVolume(setup, plan.lights, [&](size_t i) {
+                return int(generated[i].state.x) == EK_PHOTON_ACTIVE;
+            });
+        roots.insert(roots.end(), generated.begin(), generated.end());
+        rootPass.insert(rootPass.end(), generated.size(), uint8_t(k));
+    }
     std::vector<uint32_t> active;
     for (size_t i = 0; i < roots.size(); ++i) {
         if (int(roots[i].state.x) != EK_PHOTON_ACTIVE) continue;
-        result.totals.emitted += glm::dvec3(glm::vec3(roots[i].power));
+        const glm::vec3 power(roots[i].power);
+        if (passes.size() > 1 && power == glm::vec3(0.0f)) continue;  // a channel the light lacks
+        result.totals.emitted += glm::dvec3(power);
         active.push_back(uint32_t(i));
     }
     result.startingPatches = int64_t(active.size());
 
     FixedDepositsCpu sums(setup, result.totals.emitted);
-    sums.attach(kernel);
+    for (shared::WavefrontKernelCpu& kernel : kernels) sums.attach(kernel);
     result.fixedPointScale = sums.scale();
 
     WavefrontCounters counters;
@@ -134,10 +188,17 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
     const float splitVoxels = std::max(settings.splitVoxels, 1e-3f);
     const int maxLevel = std::max(settings.maxLevel, 0);
     const int samples = std::max(settings.depositSamples, 1);
-    const float surfaceSlope = kernel.anySurfaces() ? std::max(settings.surfaceSlope, 0.0f) : 0.0f;
-    // Each starting patch's share of the patch budget, counting itself.
-    const int64_t budget = std::max<int64_t>(1, int64_t(std::max(settings.maxPatches, 1)) /
-                                                    std::max<int64_t>(int64_t(active.size()), 1));
+    const float surfaceSlope =
+        kernels.front().anySurfaces() ? std::max(settings.surfaceSlope, 0.0f) : 0.0f;
+    // Each starting patch's share of the patch budget, counting itself. Under dispersion each
+    // channel's wavefront has the whole budget, so that it is the wavefront a glass of that
+    // channel's n makes, whatever the budget.
+    std::vector<int64_t> activeInPass(passes.size(), 0);
+    for (uint32_t i : active) ++activeInPass[rootPass[i]];
+    std::vector<int64_t> budgets;
+    for (int64_t count : activeInPass)
+        budgets.push_back(std::max<int64_t>(
+            1, int64_t(std::max(settings.maxPatches, 1)) / std::max<int64_t>(count, 1)));
     std::vector<std::vector<shared::GpuWavefrontPatch>> kept(keepPatches ? active.size() : 0);
 
     tbb::parallel_for(
@@ -146,6 +207,8 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
             for (size_t k = r.begin(); k != r.end(); ++k) {
                 int64_t made = 1, steps = 0, splits = 0, refused = 0, crossings = 0;
                 int deepest = 0;
+                shared::WavefrontKernelCpu& kernel = kernels[rootPass[active[k]]];
+                const int64_t budget = budgets[rootPass[active[k]]];
                 stack.assign(1, roots[active[k]]);
                 while (!stack.empty()) {
                     shared::GpuWavefrontPatch p = stack.back();

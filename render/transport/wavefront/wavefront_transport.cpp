@@ -96,13 +96,16 @@ std::vector<unsigned char> WavefrontTransport::cacheKey(
     static_assert(sizeof(WavefrontSettings) == 11 * 4,
                   "WavefrontSettings gained padding or a member");
     appendBytes(key, &settings_.trace, sizeof(settings_.trace));
+    // Each channel's wavefront bends with its own n under dispersion.
+    for (const glm::vec3& slopes : setup.channelIndexSlopes)
+        appendBytes(key, &slopes, sizeof(slopes));
     return key;
 }
 
 void WavefrontTransport::runCpu(const TransportInputsCpu& in) {
     StageScope stage(in.timer, "wavefront");
-    WavefrontResultCpu traced =
-        traceWavefrontsCpu(in.setup, in.slotGrids, in.gradient, settings_.trace);
+    WavefrontResultCpu traced = traceWavefrontsCpu(in.setup, in.slotGrids, in.gradient,
+                                                   settings_.trace, false, in.channelGradients);
     cpu_ = PhotonVolumes{};
     cpu_.radiance = smoothVolumeCpu(traced.radiance, traced.resolution);
     cpu_.direction = smoothVolumeCpu(traced.direction, traced.resolution);
