@@ -3,6 +3,7 @@
 #include "api/rendered_image.h"
 #include "api/session_impl.h"
 #include "api/shader_location.h"
+#include "core/dispersion.h"
 #include "core/error.h"
 #include "pipeline/scene_input.h"
 #include "render/image.h"
@@ -191,7 +192,7 @@ std::vector<std::string> Session::materialNames() const {
 Material Session::material(const std::string& name) const {
     const MaterialSpec& m = materialNamed(impl_->base, name);
     return {m.name, m.field, fromGlm(m.absorption), fromGlm(m.scattering), m.g, fromGlm(m.emission),
-            m.ior};
+            m.ior,  m.abbe};
 }
 
 void Session::setMaterial(const Material& material) {
@@ -203,11 +204,18 @@ void Session::setMaterial(const Material& material) {
     if (!(material.anisotropy > -1.0f && material.anisotropy < 1.0f))
         throw Error(where, "anisotropy must be in (-1, 1)");
     if (!(material.ior >= 1.0f) && m.gladstoneDale <= 0.0f) throw Error(where, "ior must be >= 1");
+    // As the scene's "abbe" (core/scene_dispersion.cpp).
+    if (!(material.abbe >= 0.0f)) throw Error(where, "abbe must be > 0, or 0 for no dispersion");
+    if (material.abbe > 0.0f && (m.gladstoneDale > 0.0f || !(material.ior > 1.0f)))
+        throw Error(where, "abbe needs a glass or a liquid: ior above 1");
+    if (material.abbe > 0.0f && !(channelIndices(material.ior, material.abbe).x >= 1.0f))
+        throw Error(where, "abbe gives an index below vacuum's in the red channel");
     m.absorption = toGlm(material.absorption);
     m.scattering = toGlm(material.scattering);
     m.g = material.anisotropy;
     m.emission = toGlm(material.emission);
     if (m.gladstoneDale <= 0.0f) m.ior = material.ior;
+    m.abbe = material.abbe;
 }
 
 }  // namespace eikon

@@ -74,7 +74,8 @@ struct Material {
     Vec3 scattering{0.0f, 0.0f, 0.0f};
     float anisotropy = 0.0f;  // Henyey–Greenstein g, in (−1, 1)
     Vec3 emission{0.0f, 0.0f, 0.0f};
-    float ior = 1.0f;
+    float ior = 1.0f;   // n_d with dispersion, the green channel's
+    float abbe = 0.0f;  // Abbe number V_d: red and blue part from ior; 0: no dispersion
 };
 
 // How far an image is from its reference, as `eikon regress` measures it (docs/regress.md): over

@@ -79,6 +79,7 @@ def test_camera_light_and_material_change_between_frames(tmp_path):
     metrics = eikon.compare_images(brighter, eikon.read_image(str(tmp_path / "before.exr")))
     assert metrics["max_abs"] > 0.0 and metrics["psnr"] < 100.0
     fog = session.material("fog")
+    assert fog.abbe == 0.0  # no dispersion
     fog.absorption = [4.0 * a for a in fog.absorption]
     session.set_material(fog)
     assert session.material("fog").absorption[0] == pytest.approx(0.8)

@@ -110,6 +110,30 @@ TEST_CASE("camera, lights, materials and size change between frames", "[api]") {
     CHECK_THROWS_AS(session.setImageSize(0, 10), eikon::Error);
 }
 
+TEST_CASE("a material's dispersion reads and changes through the library", "[api][dispersion]") {
+    eikon::Session session =
+        eikon::Session::open(sourcePath("data/scenes/crystal_dispersion.json"), eikon::Device::Cpu);
+    session.setImageSize(24, 18);
+    const auto dispersed = session.render(0);
+    eikon::Material flint = session.material("extra dense flint");
+    CHECK(flint.ior == Approx(1.923f));
+    CHECK(flint.abbe == Approx(20.9f));
+    flint.abbe = 0.0f;  // one n in every channel
+    session.setMaterial(flint);
+    CHECK(session.render(0).rgb != dispersed.rgb);
+    flint.abbe = 20.9f;
+    session.setMaterial(flint);
+    CHECK(session.render(0).rgb == dispersed.rgb);  // back as it was, exactly
+
+    flint.abbe = -1.0f;
+    CHECK_THROWS_WITH(session.setMaterial(flint),
+                      Catch::StartsWith("material 'extra dense flint': abbe must be > 0"));
+    flint.abbe = 20.9f;
+    flint.ior = 1.0f;
+    CHECK_THROWS_WITH(session.setMaterial(flint), Catch::Contains("ior above 1"));
+    CHECK(session.material("extra dense flint").ior == Approx(1.923f));  // nothing changed
+}
+
 TEST_CASE("bad scenes and files are eikon::Error with the command line's messages", "[api]") {
     // The fog scene as text, its first light's intensity made negative.
     std::string text = readFile(kFog);
