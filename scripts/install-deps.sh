@@ -15,6 +15,7 @@ PACKAGES=(
     pybind11-dev python3-dev python3-numpy python3-pytest python3-openvdb  # python/: `import eikon`,
     # its pytest suite and the pyopenvdb interplay
     clang-format  # scripts/check-format.sh
+    glslang-tools  # tests/render/test_glslang.cpp: every shader variant through the Khronos reference compiler
     slurm-wlm munge  # tests/scripts/test_slurm_farm.sh: a one-node Slurm on 127.0.0.1
     # scripts/fuzz.sh: clang with libFuzzer and the sanitizer runtimes, and llvm-symbolizer for
     # readable stacks in a finding's report.
