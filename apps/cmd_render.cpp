@@ -49,6 +49,7 @@ struct RenderOptions {
     std::string grid;
     std::string size;
     bool stats = false;
+    bool glDebug = false;
     std::string statsJson;  // --stats-json FILE (apps/stats_file.h)
     std::string backend = "auto";
     bool exr = false;
@@ -274,6 +275,7 @@ int runRender(const RenderOptions& o) {
     if (ec) throw Error(files.directory, "cannot create the output folder: " + ec.message());
     removeStalePartials(files.paths(frames));
 
+    if (o.glDebug) setGlDebugRequested(true);
     BackendChoice choice = chooseBackend(o.backend);
     std::optional<RenderManifest> manifest;
     if (!o.manifest.empty()) {
@@ -367,6 +369,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                     "auto (GPU unless OpenGL is software or missing), gpu, or cpu (the CPU twin)")
         ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
     cmd->add_flag("--exr", o->exr, "also write linear HDR EXR");
+    cmd->add_flag("--gl-debug", o->glDebug,
+                  "OpenGL debug output (GL_KHR_debug): every driver error, warning and "
+                  "performance hint as a warning on stderr (also EIKON_GL_DEBUG=1)");
     cmd->add_option("--shadows", o->shadows,
                     "light_volumes method's transmittance: volume, swept or marched")
         ->check(CLI::IsMember({"volume", "swept", "marched"}));

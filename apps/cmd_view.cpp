@@ -29,6 +29,7 @@ struct ViewOptions {
     std::string screenshot;
     std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
     bool hold = false;
+    bool glDebug = false;
     std::string up;
     std::string grid;
 };
@@ -46,6 +47,7 @@ ScriptedDrag parseDrag(const std::string& text) {
 }
 
 int runView(const ViewOptions& o) {
+    if (o.glDebug) setGlDebugRequested(true);
     ViewerOptions options;
     options.exitAfter = o.exitAfter;
     options.screenshot = o.screenshot;
@@ -99,6 +101,8 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "index");
     cmd->add_flag("--hold", o->hold,
                   "where a VDB sequence lacks a frame, show its nearest frame instead of stopping");
+    cmd->add_flag("--gl-debug", o->glDebug,
+                  "OpenGL debug output (GL_KHR_debug): driver errors and warnings on stderr");
     cmd->add_option("--backend", o->backend,
                     "auto (GPU unless OpenGL is software), gpu, or cpu (the window still needs "
                     "OpenGL)")

@@ -6,7 +6,8 @@ namespace eikon {
 namespace {
 
 std::string describe(const GlContext& gl) {
-    return gl.rendererName() + " (" + gl.versionString() + ")";
+    return gl.rendererName() + " (" + gl.versionString() + ")" +
+           (gl.debugOutput() ? ", OpenGL debug output on (driver messages as warnings)" : "");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 #include <dlfcn.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -465,7 +466,19 @@ void releaseGlfw() {
 
 }  // namespace
 
+namespace {
+std::atomic<bool>& glDebugAsked() {
+    static std::atomic<bool> asked{false};
+    return asked;
+}
+}  // namespace
+
+void setGlDebugRequested(bool requested) {
+    glDebugAsked().store(requested);
+}
+
 bool glDebugRequested() {
+    if (glDebugAsked().load()) return true;
     const char* env = std::getenv("EIKON_GL_DEBUG");
     if (env && *env) return std::strcmp(env, "0") != 0;
 #ifdef NDEBUG

@@ -75,8 +75,12 @@ private:
 // then runs on the CPU inside the GL calls, and the CPU twin of a stage is usually faster.
 bool isSoftwareRenderer(const std::string& rendererName);
 
-// Whether GL debug output is wanted: debug builds, or the environment sets EIKON_GL_DEBUG=1.
+// Whether GL debug output is wanted: debug builds, the environment sets EIKON_GL_DEBUG=1, or the
+// program asked (setGlDebugRequested: the command line's --gl-debug).
 bool glDebugRequested();
+// Asks for GL debug output (GL_KHR_debug messages as warnings) in contexts created from now on,
+// whatever the build and the environment.
+void setGlDebugRequested(bool requested);
 
 // A 4.3 core context with no surface, current on the calling thread when this returns. Tries
 // Mesa's surfaceless platform, then EGL devices (NVIDIA and other real drivers), then the default
