@@ -36,7 +36,8 @@ std::vector<Variant> variants() {
           "smooth_volume.comp", "photon_resolve.comp", "photon_round.comp", "voxelize_toggle.comp",
           "voxelize_scan.comp", "voxelize_coverage.comp", "gaussian_blur.comp", "display.vert",
           "display.frag", "test/gid_double.comp", "test/photons_compile.comp",
-          "test/std430_view_params.comp", "test/wavefront_compile.comp"})
+          "test/std430_view_params.comp", "test/std430_particles.comp",
+          "test/wavefront_compile.comp"})
         list.push_back({file, none});
     // View: texture-unit filtering (EK_HARDWARE_TRILINEAR) × one channel a dispatch (dispersion).
     for (bool trilinear : {false, true})

@@ -12,14 +12,17 @@
 
 #include "render/gl_context.h"
 #include "render/shader_program.h"
+#include "render/transport/wavefront/wavefront_tracing.h"  // GpuPhoton, GpuWavefrontPatch
 #include "shaders/shared/gpu_types.h"
 
 namespace {
 
 using eikon::shared::GpuLight;
 using eikon::shared::GpuMaterial;
+using eikon::shared::GpuPhoton;
 using eikon::shared::GpuReceiver;
 using eikon::shared::GpuViewParams;
+using eikon::shared::GpuWavefrontPatch;
 
 // The rules the shared header promises: 16-byte members only, so C++ needs no padding rules.
 static_assert(sizeof(glm::vec4) == 16 && sizeof(glm::ivec4) == 16, "GLM vectors are packed");
@@ -220,5 +223,40 @@ TEST_CASE("std430 array strides of GpuMaterial and GpuLight equal their C++ size
     compareBlock(driver, blockIndex(program.id(), "L"), lights);
     CHECK(driver.at("lightList[0].radiance").topLevelArrayStride ==
           static_cast<GLint>(sizeof(GpuLight)));
+    CHECK(glGetError() == GL_NO_ERROR);
+}
+
+TEST_CASE("std430 layouts of the particle structs GpuPhoton and GpuWavefrontPatch equal C++",
+          "[std430][gl]") {
+    static_assert(std::is_standard_layout<GpuWavefrontPatch>::value &&
+                      std::is_trivially_copyable<GpuWavefrontPatch>::value,
+                  "offsetof and memcpy");
+    static_assert(sizeof(GpuPhoton) % 16 == 0 && sizeof(GpuWavefrontPatch) % 16 == 0,
+                  "array strides are multiples of 16 bytes");
+    std::unique_ptr<eikon::GlContext> context = eikon::createHeadlessContext();
+    const eikon::ShaderProgram program =
+        eikon::ShaderProgram::compute("test/std430_particles.comp");
+    const std::map<std::string, DriverVariable> driver = driverVariables(program.id());
+
+    Layout photon = {EK_MEMBER(GpuPhoton, position), EK_MEMBER(GpuPhoton, direction),
+                     EK_MEMBER(GpuPhoton, flux)};
+    Layout photons;
+    addArray(photons, "photonList", 0, 0, 1, photon);
+    compareBlock(driver, blockIndex(program.id(), "P"), photons);
+    CHECK(driver.at("photonList[0].flux").topLevelArrayStride ==
+          static_cast<GLint>(sizeof(GpuPhoton)));
+
+    // Arrays of vec4 inside the struct: the driver reports each as its first element, "[0]".
+    Layout patch = {{"corner[0]", {offsetof(GpuWavefrontPatch, corner), GL_FLOAT_VEC4}},
+                    {"velocity[0]", {offsetof(GpuWavefrontPatch, velocity), GL_FLOAT_VEC4}},
+                    EK_MEMBER(GpuWavefrontPatch, power),
+                    EK_MEMBER(GpuWavefrontPatch, state),
+                    EK_MEMBER(GpuWavefrontPatch, surface),
+                    EK_MEMBER(GpuWavefrontPatch, surfaceNormal)};
+    Layout patches;
+    addArray(patches, "patchList", 0, 0, 1, patch);
+    compareBlock(driver, blockIndex(program.id(), "W"), patches);
+    CHECK(driver.at("patchList[0].surfaceNormal").topLevelArrayStride ==
+          static_cast<GLint>(sizeof(GpuWavefrontPatch)));
     CHECK(glGetError() == GL_NO_ERROR);
 }
