@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "core/camera.h"
+#include "core/log.h"
 #include "core/resample.h"
 #include "render/environment_map.h"
 #include "render/gl_context.h"
@@ -235,6 +236,13 @@ Image FrameRenderer::render(int frame) {
                                                     timer_.get());
         if (transportChanged)
             transport_->runGpu({setup, *textures_, *refractionGpu_, timer_.get()});
+    }
+    if (transportChanged && disperses && !needs.dispersion && !warnedDispersion_) {
+        logWarning("render.light_transport: the \"" + transport_->name() +
+                   "\" method carries light along the green channel's index in every channel: "
+                   "view rays disperse, its caustics do not (\"method\": \"wavefront\" "
+                   "disperses both)");
+        warnedDispersion_ = true;  // once per renderer, not every frame
     }
     if (transportChanged) {
         lastTransportStats_ = transport_->stats();

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 
+#include "core/log.h"
 #include "core/scene.h"
 #include "render/frame_renderer.h"
 #include "render/image.h"
@@ -176,4 +178,44 @@ TEST_CASE(
     }
     CHECK(std::memcmp(gpuImages[0].pixels.data(), gpuImages[1].pixels.data(),
                       gpuImages[0].pixels.size() * sizeof(glm::vec4)) == 0);
+}
+
+TEST_CASE("a light-transport method that does not disperse its light says so, once",
+          "[view][dispersion]") {
+    // A flint ball in fog under a directional light: photons (the default) carry light along the
+    // green channel's index; the wavefront disperses it and says nothing.
+    auto litBall = [](const char* method) {
+        Scene s;
+        s.sources.push_back(sphereSource("glass", glm::vec3(0.0f), 0.5f, 1.0f, 0.1f, 0.1f));
+        s.sources.push_back(boxSource("fog", glm::vec3(-1.0f), glm::vec3(1.0f), 1.0f));
+        eikon::MaterialSpec glass = material("glass", "glass", glm::vec3(0.0f));
+        glass.ior = kIor;
+        glass.abbe = kAbbe;
+        s.materials.push_back(glass);
+        s.materials.push_back(material("fog", "fog", glm::vec3(0.01f), glm::vec3(0.2f)));
+        s.lights.push_back(eikon::test::directionalLight(glm::vec3(0.0f, -1.0f, 0.0f), 1.0f));
+        setVolume(s, glm::vec3(-1.0f), glm::vec3(1.0f), glm::ivec3(16));
+        s.render.width = 8;
+        s.render.height = 6;
+        s.render.lightTransport = std::string("{\"method\": \"") + method + "\"}";
+        return s;
+    };
+    const std::string fragment = "carries light along the green channel's index";
+    {
+        eikon::ScopedWarningCapture capture;
+        FrameRenderer photons(litBall("photons"), Backend::Cpu);
+        photons.render(0);
+        photons.render(0);
+        CHECK(capture.contains(fragment));
+        int said = 0;
+        for (const std::string& w : capture.warnings())
+            said += w.find(fragment) != std::string::npos;
+        CHECK(said == 1);
+    }
+    {
+        eikon::ScopedWarningCapture capture;
+        FrameRenderer wavefront(litBall("wavefront"), Backend::Cpu);
+        wavefront.render(0);
+        CHECK_FALSE(capture.contains(fragment));
+    }
 }
