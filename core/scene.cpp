@@ -25,6 +25,7 @@
 #include "core/scene_memory.h"
 #include "core/scene_meshes.h"
 #include "core/scene_receivers.h"
+#include "core/scene_scan.h"
 #include "core/scene_simulation.h"
 #include "core/scene_voxel_size.h"
 #include "shaders/shared/gpu_types.h"
@@ -325,14 +326,20 @@ SourceSpec readSource(const Value& value, const fs::path& sceneDirectory) {
     source.jsonPath = value.pointer();
     // The type decides which other keys belong, so it is read first.
     const std::string type =
-        object.required("type", "\"vdb\", \"vdb_sequence\", \"sphere\", \"box\" or \"simulation\"")
-            .choice({"vdb", "vdb_sequence", "sphere", "box", "simulation"});
+        object
+            .required("type",
+                      "\"vdb\", \"vdb_sequence\", \"scan\", \"sphere\", \"box\" or \"simulation\"")
+            .choice({"vdb", "vdb_sequence", "scan", "sphere", "box", "simulation"});
     object.setKind("a " + type + " source");
     if (type == "simulation") {
         source.type = SourceType::Simulation;  // the scene's "simulation" is checked at the end
     } else if (type == "vdb" || type == "vdb_sequence") {
         source.type = type == "vdb" ? SourceType::Vdb : SourceType::VdbSequence;
         readFileSource(object, sceneDirectory, source);
+    } else if (type == "scan") {
+        source.type = SourceType::Scan;
+        if (auto field = object.optional("field")) source.field = readScalarFieldName(*field);
+        scene_detail::readScanSource(object, sceneDirectory, source);
     } else if (type == "sphere") {
         source.type = SourceType::Sphere;
         readSphereSource(object, source);

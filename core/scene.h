@@ -35,7 +35,9 @@ struct VolumeSettings {
 // Simulation: the fields of the scene's own smoke simulation (density, temperature, velocity),
 // stepped live frame by frame by the program rendering the scene (pipeline/scene_driver.h) instead
 // of read from a cache; the scene must have a "simulation" section.
-enum class SourceType { Vdb, VdbSequence, Sphere, Box, Simulation };
+// Scan: a scanned volume (CT, MRI) in an NRRD file or a headerless raw file (core/scan_layout.h),
+// read into field `field`.
+enum class SourceType { Vdb, VdbSequence, Sphere, Box, Simulation, Scan };
 
 // How a procedural shape's value varies inside it (core/procedural.h has the formulas).
 // Uniform: `value` everywhere. Luneburg (spheres): value · (sqrt(2 − (r/R)²) − 1), so that a
@@ -81,6 +83,16 @@ struct SourceSpec {
     // The shape is kept only where a voxel centre lies in [clip.min, clip.max) (half-open, so
     // that shapes clipped to adjacent boxes share no voxel), with no falloff across the clip.
     std::optional<Bounds3> clip;
+    // Scan: a headerless raw file's dimensions, value type ("uint8", "int16", ...) and byte order
+    // (from its name `<name>_<X>x<Y>x<Z>_<type>.raw` when not given; an NRRD header says them
+    // itself); the spacing and the position of sample (0, 0, 0), replacing the header's; the
+    // window [low, high] that maps the stored values to [0, 1].
+    std::optional<glm::ivec3> scanDims;
+    std::string scanValueType;
+    bool scanBigEndian = false;
+    std::optional<glm::vec3> scanSpacing;
+    std::optional<glm::vec3> scanOrigin;
+    std::optional<glm::vec2> scanWindow;
     std::string jsonPath;  // e.g. "/sources/2", for messages raised after parsing
 };
 

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/procedural.h"
+#include "core/scan_volume.h"
 #include "core/vdb_import.h"
 
 #include <openvdb/tools/Composite.h>
@@ -79,12 +80,33 @@ void SceneSources::addProcedural(const SourceSpec& src, const std::string& origi
     fields.set(src.field, grid, origin);
 }
 
+void SceneSources::addScan(const SourceSpec& src, const std::string& origin,
+                           FieldRegistry& fields) {
+    ScanFileOptions options;
+    options.dims = src.scanDims;
+    if (!src.scanValueType.empty()) options.type = parseScanValueType(src.scanValueType);
+    options.bigEndian = src.scanBigEndian;
+    if (src.scanSpacing) options.spacing = glm::dvec3(*src.scanSpacing);
+    if (src.scanOrigin) options.origin = glm::dvec3(*src.scanOrigin);
+    options.read.fieldName = src.field;
+    if (src.scanWindow) options.read.window = ScanWindow{src.scanWindow->x, src.scanWindow->y};
+    try {
+        const ScanFile scan = readScanFile(src.file, options);
+        logInfo(describeScanFile(src.file, scan));
+        fields.set(src.field, scan.volume.grid, origin);
+    } catch (const Error& e) {
+        // The file's own message, plus which source of the scene asked for it.
+        throw Error(e.where(), e.reason() + " (source " + origin + ")");
+    }
+}
+
 void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
     for (size_t s = 0; s < scene_.sources.size(); ++s) {
         const SourceSpec& src = scene_.sources[s];
         std::string key;  // identifies what this source would put in the registry now
         switch (src.type) {
             case SourceType::Vdb:
+            case SourceType::Scan:
                 key = src.file;
                 break;
             case SourceType::VdbSequence:
@@ -109,6 +131,9 @@ void SceneSources::loadFrame(int frame, FieldRegistry& fields) {
                     // The file's own message, plus which source of the scene asked for it.
                     throw Error(e.where(), e.reason() + " (source " + origin + ")");
                 }
+                break;
+            case SourceType::Scan:
+                addScan(src, origin, fields);
                 break;
             case SourceType::Sphere:
             case SourceType::Box:

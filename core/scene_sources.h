@@ -1,6 +1,6 @@
 #pragma once
-// Turns a scene's sources into fields for a given frame: VDB files once, sequences when the
-// frame's file changes, procedural shapes once. Fields that did not change keep their version,
+// Turns a scene's sources into fields for a given frame: VDB files and scans once, sequences when
+// the frame's file changes, procedural shapes once. Fields that did not change keep their version,
 // so the GPU upload skips them.
 #include <map>
 #include <set>
@@ -26,6 +26,7 @@ public:
 
 private:
     void addProcedural(const SourceSpec& src, const std::string& origin, FieldRegistry& fields);
+    void addScan(const SourceSpec& src, const std::string& origin, FieldRegistry& fields);
 
     const Scene& scene_;
     std::set<std::string> proceduralFields_;    // fields procedural sources have written

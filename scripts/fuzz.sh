@@ -7,7 +7,8 @@
 # Usage: scripts/fuzz.sh [--seconds N | --runs N] [--target NAME]...
 #   --seconds N  run each target for N seconds (default 60)
 #   --runs N     run each target for N inputs instead (the long runs of RELIABILITY.md)
-#   --target T   only this target (fuzz_vdb, fuzz_ply, fuzz_obj, fuzz_off, fuzz_stl, fuzz_scene);
+#   --target T   only this target (fuzz_vdb, fuzz_ply, fuzz_obj, fuzz_off, fuzz_stl, fuzz_scene,
+#                fuzz_nrrd);
 #                may repeat
 #   --resume     start from the working corpus the last run left, not from the seeds (a long run
 #                continued after a fix)
@@ -17,7 +18,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-ALL_TARGETS=(fuzz_vdb fuzz_ply fuzz_obj fuzz_off fuzz_stl fuzz_scene)
+ALL_TARGETS=(fuzz_vdb fuzz_ply fuzz_obj fuzz_off fuzz_stl fuzz_scene fuzz_nrrd)
 LIMIT=(-max_total_time=60)
 TARGETS=()
 RESUME=0

@@ -10,6 +10,7 @@ PACKAGES=(
     libglm-dev libglfw3-dev libepoxy-dev libegl-dev libgl-dev
     libegl-mesa0 libgl1-mesa-dri libglx-mesa0 xvfb xauth
     nlohmann-json3-dev libcli11-dev libpng-dev libopenexr-dev
+    zlib1g-dev  # gzip-encoded NRRD scans (core/scan_volume.cpp)
     catch2
     python3-matplotlib  # scripts/plot_advection_bench.py (run with /usr/bin/python3)
     pybind11-dev python3-dev python3-numpy python3-pytest python3-openvdb  # python/: `import eikon`,

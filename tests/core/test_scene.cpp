@@ -596,7 +596,7 @@ TEST_CASE("enumerations list the allowed values", "[scene]") {
         const Failure f =
             failureOf(R"({"sources": [{"type": "mesh"}], "materials": [{"name": "m"}]})");
         CHECK(f.where == "smoke.json:/sources/0/type");
-        CHECK_THAT(f.reason, Contains(R"("vdb", "vdb_sequence", "sphere", "box")"));
+        CHECK_THAT(f.reason, Contains(R"("vdb", "vdb_sequence", "scan", "sphere", "box")"));
     }
     SECTION("material on a field that is not canonical") {
         const Failure f = failureOf(
