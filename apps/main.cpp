@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
         "an internal fault.\n'eikon COMMAND --help' shows a command's options and examples.");
     int exitCode = 0;
     eikon::app::addInfoCommand(app, exitCode);
+    eikon::app::addConvertCommand(app, exitCode);
     eikon::app::addRenderCommand(app, exitCode);
     eikon::app::addDiffCommand(app, exitCode);
     eikon::app::addViewCommand(app, exitCode);
