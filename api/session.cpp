@@ -5,6 +5,7 @@
 #include "api/shader_location.h"
 #include "core/dispersion.h"
 #include "core/error.h"
+#include "core/transfer_function.h"
 #include "pipeline/scene_input.h"
 #include "render/image.h"
 
@@ -191,8 +192,17 @@ std::vector<std::string> Session::materialNames() const {
 
 Material Session::material(const std::string& name) const {
     const MaterialSpec& m = materialNamed(impl_->base, name);
-    return {m.name, m.field, fromGlm(m.absorption), fromGlm(m.scattering), m.g, fromGlm(m.emission),
-            m.ior,  m.abbe};
+    Material out{m.name,
+                 m.field,
+                 fromGlm(m.absorption),
+                 fromGlm(m.scattering),
+                 m.g,
+                 fromGlm(m.emission),
+                 m.ior,
+                 m.abbe,
+                 {}};
+    for (const glm::vec2& p : m.transfer) out.transfer.push_back({p.x, p.y});
+    return out;
 }
 
 void Session::setMaterial(const Material& material) {
@@ -210,12 +220,22 @@ void Session::setMaterial(const Material& material) {
         throw Error(where, "abbe needs a glass or a liquid: ior above 1");
     if (material.abbe > 0.0f && !(channelIndices(material.ior, material.abbe).x >= 1.0f))
         throw Error(where, "abbe gives an index below vacuum's in the red channel");
+    std::vector<glm::vec2> transfer;
+    for (const std::array<float, 2>& p : material.transfer) transfer.emplace_back(p[0], p[1]);
+    // As the scene's "transfer" (core/scene_transfer.cpp).
+    if (!transfer.empty() && m.gladstoneDale > 0.0f)
+        throw Error(where, "a Gladstone–Dale material takes no transfer function");
+    if (!transfer.empty()) {
+        const std::string problem = transferFunctionProblem(transfer);
+        if (!problem.empty()) throw Error(where, "the transfer function " + problem);
+    }
     m.absorption = toGlm(material.absorption);
     m.scattering = toGlm(material.scattering);
     m.g = material.anisotropy;
     m.emission = toGlm(material.emission);
     if (m.gladstoneDale <= 0.0f) m.ior = material.ior;
     m.abbe = material.abbe;
+    m.transfer = transfer;
 }
 
 }  // namespace eikon

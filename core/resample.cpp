@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/memory_limit.h"
+#include "core/transfer_function.h"
 
 namespace eikon {
 namespace {
@@ -172,7 +173,7 @@ std::string voxelPosition(const RenderVolume& volume, size_t v) {
 
 const DenseGrid& denseFor(const Scene& scene, const std::map<std::string, DenseGrid>& dense,
                           size_t m) {
-    auto it = dense.find(scene.materials[m].field);
+    auto it = dense.find(materialSlotName(scene.materials[m]));
     if (it == dense.end())
         throw Error(scene.path + ":/materials/" + std::to_string(m) + "/field",
                     "field '" + scene.materials[m].field + "' was not resampled");

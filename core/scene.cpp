@@ -27,6 +27,7 @@
 #include "core/scene_receivers.h"
 #include "core/scene_scan.h"
 #include "core/scene_simulation.h"
+#include "core/scene_transfer.h"
 #include "core/scene_voxel_size.h"
 #include "shaders/shared/gpu_types.h"
 
@@ -388,6 +389,7 @@ MaterialSpec readMaterial(const Value& value) {
         t->fail("\"ambient_kelvin\" needs \"gladstone_dale\"");
     }
     scene_detail::readDispersion(object, material, ior.has_value());
+    scene_detail::readTransfer(object, material);
     material.fresnel = material.gladstoneDale == 0.0f;
     if (auto fresnel = object.optional("fresnel")) material.fresnel = fresnel->boolean();
     object.finish();

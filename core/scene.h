@@ -129,6 +129,11 @@ struct MaterialSpec {
     // Dispersion (core/dispersion.h): ior is n_d, the green channel's index, and abbe the Abbe
     // number V_d that parts red and blue from it; 0: n the same in every channel.
     float abbe = 0.0f;
+    // A transfer function (core/transfer_function.h): the material reads amount(f), piecewise
+    // linear through these (value, amount) points, flat beyond the first and the last, in place
+    // of f itself; applied to the field's values at the render volume's voxels (pre-classified).
+    // Empty: the field's value itself (f ↦ f).
+    std::vector<glm::vec2> transfer;
 
     // n in the red, green and blue channels (ior in each without dispersion).
     glm::vec3 channelIor() const { return channelIndices(ior, abbe); }

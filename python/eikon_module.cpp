@@ -152,7 +152,8 @@ PYBIND11_MODULE(eikon, m) {
         .def_readwrite("anisotropy", &eikon::Material::anisotropy)
         .def_readwrite("emission", &eikon::Material::emission)
         .def_readwrite("ior", &eikon::Material::ior)
-        .def_readwrite("abbe", &eikon::Material::abbe);
+        .def_readwrite("abbe", &eikon::Material::abbe)
+        .def_readwrite("transfer", &eikon::Material::transfer);
 
     using eikon::Session;
     py::class_<Session>(m, "Session")

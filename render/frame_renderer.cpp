@@ -5,6 +5,7 @@
 #include "core/camera.h"
 #include "core/log.h"
 #include "core/resample.h"
+#include "core/transfer_function.h"
 #include "render/environment_map.h"
 #include "render/gl_context.h"
 #include "render/input_key.h"
@@ -166,17 +167,23 @@ Image FrameRenderer::render(int frame) {
         makeViewSetup(scene_, volume_, camera, glm::ivec2(environment.width, environment.height));
     std::vector<const DenseGrid*> slotGrids;
     for (const std::string& name : setupWithoutTransport.slotFields) {
-        if (meshOfField(scene_, name) >= 0) {  // written by meshFields_ above
-            slotGrids.push_back(&dense_.at(name));
-            continue;
+        const MaterialSpec* classified = transferMaterialOfSlot(scene_, name);
+        const std::string fieldName = classified ? classified->field : name;
+        const DenseGrid* grid = nullptr;
+        if (meshOfField(scene_, fieldName) >= 0) {  // written by meshFields_ above
+            grid = &dense_.at(fieldName);
+        } else {
+            const Field& f = fields_.get(fieldName);
+            auto it = dense_.find(fieldName);
+            if (it == dense_.end() || it->second.version != f.version ||
+                it->second.volume != volume_) {
+                dense_[fieldName] = resampleToDense(f, volume_);
+                ++resamples_;
+            }
+            grid = &dense_[fieldName];
         }
-        const Field& f = fields_.get(name);
-        auto it = dense_.find(name);
-        if (it == dense_.end() || it->second.version != f.version || it->second.volume != volume_) {
-            dense_[name] = resampleToDense(f, volume_);
-            ++resamples_;
-        }
-        slotGrids.push_back(&dense_[name]);
+        if (classified) grid = &classifiedSlot(name, *grid, classified->transfer);
+        slotGrids.push_back(grid);
     }
     timer_->end();
 
@@ -283,6 +290,21 @@ Image FrameRenderer::render(int frame) {
 // receivers change) takes over at once; new settings of the same method take over when they
 // change what its output depends on (its cache key), not when they only touch another method's
 // section.
+// The slot of a material with a transfer function: its field's dense grid mapped through it,
+// again only when the field's grid or the function changed. Its version is one of its own, new
+// each time, so the upload and the caches keyed on versions see the change.
+const DenseGrid& FrameRenderer::classifiedSlot(const std::string& slotName, const DenseGrid& field,
+                                               const std::vector<glm::vec2>& transfer) {
+    Classified& c = classified_[slotName];
+    auto it = dense_.find(slotName);
+    if (it == dense_.end() || c.fieldVersion != field.version || c.volume != field.volume ||
+        c.transfer != transfer) {
+        c = Classified{field.version, field.volume, transfer};
+        dense_[slotName] = applyTransfer(field, transfer, slotName, nextClassifiedVersion_++);
+    }
+    return dense_.at(slotName);
+}
+
 void FrameRenderer::updateTransport(const ViewSetup& base,
                                     const std::vector<const DenseGrid*>& slotGrids) {
     std::unique_ptr<LightTransport> fresh = makeLightTransport(scene_, device_);

@@ -102,6 +102,8 @@ public:
 
 private:
     void setMesh(size_t index, TriangleMesh objectSpace);
+    const DenseGrid& classifiedSlot(const std::string& slotName, const DenseGrid& field,
+                                    const std::vector<glm::vec2>& transfer);
     void updateTransport(const ViewSetup& base, const std::vector<const DenseGrid*>& slotGrids);
 
     Scene scene_;
@@ -112,7 +114,17 @@ private:
     FieldRegistry fields_;
     MeshFields meshFields_;
     std::unique_ptr<MeshVoxelizerGpu> voxelizerGpu_;
-    std::map<std::string, DenseGrid> dense_;  // by field name
+    std::map<std::string, DenseGrid> dense_;  // by field name, and by slot name (view_params.h)
+    // What each transfer-function slot of dense_ was made from (classifiedSlot).
+    struct Classified {
+        std::uint64_t fieldVersion = 0;
+        RenderVolume volume;
+        std::vector<glm::vec2> transfer;
+    };
+    std::map<std::string, Classified> classified_;
+    // Versions of classified slots: far above any field's (core/field_registry.h counts from 1),
+    // so the two never meet.
+    std::uint64_t nextClassifiedVersion_ = std::uint64_t(1) << 62;
     RenderVolume volume_;
     std::unique_ptr<VolumeTextures> textures_;
     std::unique_ptr<ParamsBuffer> paramsBuffer_;

@@ -6,6 +6,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "core/error.h"
+#include "core/transfer_function.h"
 
 namespace eikon {
 namespace {
@@ -127,9 +128,11 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
 
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const MaterialSpec& mat = scene.materials[m];
-        auto slot = std::find(setup.slotFields.begin(), setup.slotFields.end(), mat.field);
+        // Materials reading one field share its slot; one with a transfer function has its own.
+        const std::string slotName = materialSlotName(mat);
+        auto slot = std::find(setup.slotFields.begin(), setup.slotFields.end(), slotName);
         if (slot == setup.slotFields.end())
-            slot = setup.slotFields.insert(setup.slotFields.end(), mat.field);
+            slot = setup.slotFields.insert(setup.slotFields.end(), slotName);
         shared::GpuMaterial& g = p.materials[m];
         g.absorption = v4(mat.absorption, mat.g);
         // w: what makes a Gladstone–Dale material's index exact (shaders/shared/material_index.h).

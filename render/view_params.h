@@ -13,7 +13,9 @@ namespace eikon {
 
 struct ViewSetup {
     shared::GpuViewParams params{};
-    std::vector<std::string> slotFields;  // slot -> field name, the textures to bind in order
+    // slot -> field name (or "<field>|<material>" for a material's transfer function,
+    // core/transfer_function.h), the textures to bind in order
+    std::vector<std::string> slotFields;
     // Dispersion (core/dispersion.h): per material, n − 1 per unit of its field in the red, green
     // and blue channels, when any material of a scene with curved rays disperses; empty when none
     // does. params holds the green channel's (the d line's, ior − 1).

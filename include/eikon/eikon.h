@@ -76,6 +76,9 @@ struct Material {
     Vec3 emission{0.0f, 0.0f, 0.0f};
     float ior = 1.0f;   // n_d with dispersion, the green channel's
     float abbe = 0.0f;  // Abbe number V_d: red and blue part from ior; 0: no dispersion
+    // Transfer function: [value, amount] points, the material reading amount(f) in place of its
+    // field's value f; empty: f itself (docs/scene-format.md#materials, "transfer").
+    std::vector<std::array<float, 2>> transfer;
 };
 
 // How far an image is from its reference, as `eikon regress` measures it (docs/regress.md): over

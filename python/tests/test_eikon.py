@@ -80,10 +80,21 @@ def test_camera_light_and_material_change_between_frames(tmp_path):
     assert metrics["max_abs"] > 0.0 and metrics["psnr"] < 100.0
     fog = session.material("fog")
     assert fog.abbe == 0.0  # no dispersion
+    assert fog.transfer == []  # the field's value itself
     fog.absorption = [4.0 * a for a in fog.absorption]
     session.set_material(fog)
     assert session.material("fog").absorption[0] == pytest.approx(0.8)
     assert np.array(session.render(0).transmittance).mean() < brighter.transmittance.mean()
+    dense = np.array(session.render(0).transmittance).mean()
+    fog.transfer = [[0.0, 0.0], [1.0, 2.0]]  # twice the density, up to 1
+    session.set_material(fog)
+    assert session.material("fog").transfer == [[0.0, 0.0], [1.0, 2.0]]
+    assert np.array(session.render(0).transmittance).mean() < dense
+    fog.transfer = [[0.0, 1.0], [1.0, 1.0]]
+    with pytest.raises(eikon.Error, match="maps 0 to 1"):
+        session.set_material(fog)
+    fog.transfer = []
+    session.set_material(fog)
     session.set_image_size(12, 8)
     smaller = session.render(0)
     with pytest.raises(eikon.Error, match="differ in size"):

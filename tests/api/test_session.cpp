@@ -134,6 +134,33 @@ TEST_CASE("a material's dispersion reads and changes through the library", "[api
     CHECK(session.material("extra dense flint").ior == Approx(1.923f));  // nothing changed
 }
 
+TEST_CASE("a material's transfer function reads and changes through the library",
+          "[api][transfer]") {
+    eikon::Session session =
+        eikon::Session::open(sourcePath("data/scenes/ct_tooth.json"), eikon::Device::Cpu);
+    session.setImageSize(16, 20);
+    const auto classified = session.render(0);
+    eikon::Material enamel = session.material("enamel");
+    REQUIRE(enamel.transfer.size() == 3);
+    CHECK(enamel.transfer[2][0] == Approx(0.85f));
+    CHECK(enamel.transfer[2][1] == 1.0f);
+    const auto kept = enamel.transfer;
+    enamel.transfer.clear();  // the windowed scan itself: enamel everywhere the tooth is
+    session.setMaterial(enamel);
+    CHECK(session.render(0).rgb != classified.rgb);
+    enamel.transfer = kept;
+    session.setMaterial(enamel);
+    CHECK(session.render(0).rgb == classified.rgb);  // back as it was, exactly
+
+    enamel.transfer = {{0.0f, 0.0f}, {0.5f, 1.0f}, {0.4f, 2.0f}};
+    CHECK_THROWS_WITH(session.setMaterial(enamel),
+                      Catch::StartsWith("material 'enamel': the transfer function point 2: value "
+                                        "0.4 is not above the one before, 0.5"));
+    enamel.transfer = {{0.0f, 1.0f}, {1.0f, 1.0f}};
+    CHECK_THROWS_WITH(session.setMaterial(enamel), Catch::Contains("maps 0 to 1"));
+    CHECK(session.material("enamel").transfer.size() == 3);  // nothing changed
+}
+
 TEST_CASE("bad scenes and files are eikon::Error with the command line's messages", "[api]") {
     // The fog scene as text, its first light's intensity made negative.
     std::string text = readFile(kFog);

@@ -46,8 +46,10 @@ TEST_CASE("typos name the closest command or option", "[cli][usage]") {
 
 TEST_CASE("missing and rejected arguments are one line too", "[cli][usage]") {
     const std::string dir = scratchDir("cli_usage_missing");
-    checkUsage(dir, "", "eikon: ",
-               "a command is required: info, render, diff, view, simulate, regress, bench");
+    checkUsage(
+        dir, "", "eikon: ",
+        "a command is required: info, convert, render, diff, view, simulate, regress, bench");
+    checkUsage(dir, "convert", "convert: ", "scan is required (eikon convert --help)");
     checkUsage(dir, "render", "render: ", "input is required (eikon render --help)");
     checkUsage(dir, "render scene.json --backend vulkan", "render: ", "--backend");
     checkUsage(dir, "render a.json b.json", "render: ", "'b.json': unexpected argument");
