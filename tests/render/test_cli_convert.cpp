@@ -88,3 +88,24 @@ TEST_CASE("eikon convert: bad scans and options get one line and write nothing",
         CHECK_FALSE(std::filesystem::exists(out));
     }
 }
+
+TEST_CASE("eikon info on a scan: layout, values, percentiles and a histogram", "[cli][scan]") {
+    const std::string dir = eikon::test::scratchDir("cli_info_scan");
+    const std::string tooth = eikon::test::sharedData(kTooth);
+    const auto r = runEikon("info " + quoted(tooth), dir);
+    INFO(r.out << r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK(contains(r.out, tooth + ": scanned volume, 103×94×161 uint8, raw file\n"));
+    CHECK(contains(r.out, "  spacing 1 1 1, origin 0 0 0, last sample at 102 93 160\n"));
+    // numpy: 15 zeros among the 1,558,802 samples, none below 0 or above 255, the median 79.
+    CHECK(contains(r.out, "  values 0 … 255; 15 of 1558802 samples are 0 (0.000962277 %)\n"));
+    CHECK(contains(r.out, ", 50 % 79, "));
+    CHECK(contains(r.out, "  histogram (16 bins from 0 to 255):\n"));
+    // numpy's bincount over [64, 80): 802,740 samples, the background, the tallest bar.
+    CHECK(contains(r.out,
+                   "    [     63.75,      79.69)     802740  ####################"
+                   "####################\n"));
+    const auto bad = runEikon("info " + quoted(dir + "/x_4x4x4_uint8.raw"), dir);
+    CHECK(bad.exitCode == 1);
+    CHECK(contains(bad.err, "x_4x4x4_uint8.raw: no such file"));
+}
