@@ -8,12 +8,14 @@
 #include "core/scene.h"
 #include "render/frame_renderer.h"
 #include "render/image.h"
+#include "support/backends.h"
 #include "support/scene_builders.h"
 
 using eikon::Backend;
 using eikon::FrameRenderer;
 using eikon::Image;
 using eikon::Scene;
+using eikon::test::backendName;
 using eikon::test::boxSource;
 using eikon::test::cameraAt;
 using eikon::test::material;
@@ -37,10 +39,6 @@ glm::vec3 pixel(const Scene& scene, Backend backend) {
     FrameRenderer renderer(scene, backend);
     const Image image = renderer.render(0);
     return glm::vec3(image.pixels[0]);
-}
-
-const char* backendName(Backend b) {
-    return b == Backend::Gpu ? "GPU" : "CPU twin";
 }
 
 }  // namespace
