@@ -20,6 +20,7 @@
 #include "render/transport/wavefront/wavefront_tracing.h"
 #include "render/volume_kernels_cpu.h"
 #include "support/fluence_peak.h"
+#include "support/grin_lens.h"
 #include "support/linear_n2_medium.h"
 #include "support/photon_scene.h"
 #include "support/wavefront_test_kernel.h"
@@ -195,46 +196,16 @@ TEST_CASE(
     "a converging lens: on the axis E grows as A(0)/A(t) until the focus, and the energy "
     "account closes with the removed power reported",
     "[wavefront][lens]") {
-    // A GRIN lens: n − 1 = w(y)·(Δ − r²/(2f)) within the aperture a, with a window w of
-    // ∫w dy = 1 around the plane y = yLens. A ray at r leaves it with sin θ = ∫∂n/∂r dy = −r/f,
-    // so a collimated beam converges on the axis and its cross-section, the patches' area,
-    // shrinks as r(z)²: E(z) = E0 (r0 / r(z))². In the thin-lens limit r(z)/r0 = 1 − z/f; this
-    // lens is 6 voxels thick with n up to 1.8, where rays slow to 1/n and move sideways less,
-    // which moves its principal plane 0.026 below the window's centre (0.8 voxels, 14 % of E at
-    // z = 3f/4). The reference is therefore the paraxial ray of the lens's own n, integrated in
-    // double precision in 10⁴ slices: dr/dy = p/n(y), dp/dy = −w(y) r/f (no grid, no RK4).
-    constexpr int kRes = 63;  // odd: x = z = 0 runs through a column of voxel centres
-    constexpr double kVoxel = 2.0 / kRes;
-    constexpr float kFocal = 1.0f, kAperture = 0.4f, kLensY = 0.6f;
-    constexpr float kHalfWidth = 3.0f * float(kVoxel);
-    const float delta = kAperture * kAperture / (2.0f * kFocal);
-    auto window = [&](double y) {
-        const double u = (y - kLensY) / kHalfWidth;
-        if (std::abs(u) >= 1.0) return 0.0;
-        const double c = std::cos(0.5 * glm::pi<double>() * u);
-        return c * c / kHalfWidth;  // ∫w dy = 1
-    };
-    auto lens = [&](glm::vec3 x) {
-        const float r2 = std::min(x.x * x.x + x.z * x.z, kAperture * kAperture);
-        return float(window(x.y)) * (delta - r2 / (2.0f * kFocal));  // n − 1, read with ior 2
-    };
-    // r(z)/r0 of the paraxial ray, z below yLens, for z past the window (a straight line there).
-    double slope = 0.0, offset = 0.0;  // r(z)/r0 = offset + slope · z
-    {
-        const int slices = 10000;
-        const double dy = 2.0 * kHalfWidth / slices;
-        double r = 1.0, p = 0.0;
-        for (int i = 0; i < slices; ++i) {  // midpoint rule from the window's top down
-            const double y = kLensY + kHalfWidth - (i + 0.5) * dy;
-            const double n = 1.0 + window(y) * delta;
-            const double rMid = r + 0.5 * dy * p / n;
-            p -= dy * window(y) * rMid / kFocal;
-            r += dy * p / n;
-        }
-        slope = p;  // n = 1 below the window: dr/dz = p
-        offset = r - p * kHalfWidth;
-    }
-    auto paraxialE = [&](double z) { return 1.0 / std::pow(offset + slope * z, 2); };
+    // The lens of support/grin_lens.h and its paraxial reference.
+    const test::GrinLens grin;
+    constexpr int kRes = test::GrinLens::kRes;
+    constexpr double kVoxel = test::GrinLens::kVoxel;
+    constexpr float kFocal = test::GrinLens::kFocal, kLensY = test::GrinLens::kLensY,
+                    kAperture = test::GrinLens::kAperture;
+    constexpr float kHalfWidth = test::GrinLens::kHalfWidth;
+    const double slope = grin.slope, offset = grin.offset;
+    auto paraxialE = [&](double z) { return grin.paraxialE(z); };
+    auto lens = &test::GrinLens::field;
     PhotonScene s(kRes, 2.0f, glm::vec3(0.0f), glm::vec3(0.0f, -1.0f, 0.0f), lens);
     s.markGraded();
     const float windowBottom = kLensY - kHalfWidth;
