@@ -19,6 +19,19 @@ StageScope::~StageScope() {
     if (timer_) timer_->end();
 }
 
+TransportOutputCpu fluenceOutputOf(const std::vector<glm::vec4>& fluence,
+                                   const std::vector<glm::vec4>& direction,
+                                   const std::vector<glm::vec4>& receiverMap) {
+    TransportOutputCpu out;
+    if (fluence.empty()) return out;
+    out.fluence = fluence.data();
+    out.direction = direction.data();
+    out.fluenceVoxels = fluence.size();
+    out.receiverMap = receiverMap.data();
+    out.receiverTexels = receiverMap.size();
+    return out;
+}
+
 bool viewReadsLightTransmittance(const ViewSetup& setup) {
     const shared::GpuViewParams& p = setup.params;
     if (shared::lightCount(p) == 0 || shared::shadowMode(p) == EK_SHADOWS_MARCHED) return false;

@@ -92,6 +92,12 @@ struct TransportOutputCpu {
     size_t receiverTexels = 0;               // texels of receiverMap
 };
 
+// The contract's view of a method's fluence, mean-direction and receiver-map vectors (empty when
+// nothing was computed), for methods that keep them as std::vector.
+TransportOutputCpu fluenceOutputOf(const std::vector<glm::vec4>& fluence,
+                                   const std::vector<glm::vec4>& direction,
+                                   const std::vector<glm::vec4>& receiverMap);
+
 // Where and how a method's GPU run computes (chosen once per renderer).
 struct TransportDevice {
     bool gpu = false;

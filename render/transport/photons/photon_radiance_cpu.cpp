@@ -22,14 +22,7 @@ PhotonVolumes computePhotonRadianceCpu(const ViewSetup& setup,
 }
 
 TransportOutputCpu transportOutputOf(const PhotonVolumes& volumes) {
-    TransportOutputCpu out;
-    if (volumes.radiance.empty()) return out;
-    out.fluence = volumes.radiance.data();
-    out.direction = volumes.direction.data();
-    out.fluenceVoxels = volumes.radiance.size();
-    out.receiverMap = volumes.receiverMap.data();
-    out.receiverTexels = volumes.receiverMap.size();
-    return out;
+    return fluenceOutputOf(volumes.radiance, volumes.direction, volumes.receiverMap);
 }
 
 }  // namespace eikon
