@@ -4,6 +4,7 @@
 
 #include "render/transport/light_volumes/light_volume_transport.h"
 #include "render/transport/photons/photon_transport.h"
+#include "render/transport/plane_sweep/plane_sweep_transport.h"
 #include "render/transport/wavefront/wavefront_transport.h"
 
 namespace eikon {
@@ -101,6 +102,17 @@ const std::vector<LightTransportMethod>& lightTransportMethods() {
           {"paper", R"({"at_caustic": "remove", "deposit_samples": 1})"},
           {"midpoint", R"({"integrator": "midpoint"})"},
           {"euler", R"({"integrator": "euler"})"}}},
+        {"plane_sweep",
+         "Magnus's thesis: each light's 2D buffer advances plane by plane, looking back along its "
+         "direction, bending by the ∇n step and correcting intensity by footprint areas (curved "
+         "light, caustics, no noise); CPU twin only so far",
+         [](const json::Value* s, const TransportDevice& d) {
+             return make<PlaneSweepTransport>(readPlaneSweepTransportSettings(s), d);
+         },
+         {{"coarse", R"({"back_trace_refinements": 0})"},
+          {"default", "{}"},
+          {"fine", R"({"planes_per_voxel": 4})"},
+          {"uncorrected", R"({"intensity_correction": false})"}}},
     };
     return methods;
 }

@@ -37,7 +37,7 @@ std::vector<Variant> variants() {
           "voxelize_scan.comp", "voxelize_coverage.comp", "gaussian_blur.comp", "display.vert",
           "display.frag", "test/gid_double.comp", "test/photons_compile.comp",
           "test/std430_view_params.comp", "test/std430_particles.comp",
-          "test/wavefront_compile.comp"})
+          "test/wavefront_compile.comp", "test/plane_sweep_compile.comp"})
         list.push_back({file, none});
     // View: texture-unit filtering (EK_HARDWARE_TRILINEAR) × one channel a dispatch (dispersion).
     for (bool trilinear : {false, true})
@@ -66,7 +66,7 @@ std::vector<Variant> variants() {
 // Switches the shaders test that only C++ includers set (the shared headers' type-only parts)
 // or that a shader defines itself.
 const std::set<std::string> kNotVariants = {"EK_PHOTON_TYPES_ONLY", "EK_WAVEFRONT_TYPES_ONLY",
-                                            "EK_OCTREE_LEAF_RANGE"};
+                                            "EK_PLANE_SWEEP_TYPES_ONLY", "EK_OCTREE_LEAF_RANGE"};
 
 // Runs a command, returning its exit status and its output (stdout and stderr).
 int run(const std::string& command, std::string& output) {

@@ -298,6 +298,70 @@ TEST_CASE(
     }
 }
 
+TEST_CASE(
+    "the plane sweep's settings: errors at the pointer, each in its cache key, no GPU run yet",
+    "[light_transport][plane_sweep]") {
+    SECTION("errors") {
+        const Failure f = failureOf(
+            glassInFog(R"("light_transport": {"plane_sweep": {"planes_per_voxels": 2}})"));
+        CHECK(f.where == "glass.json:/render/light_transport/plane_sweep/planes_per_voxels");
+        CHECK_THAT(f.reason, Contains("did you mean 'planes_per_voxel'?"));
+        for (const char* bad : {R"({"planes_per_voxel": 0})", R"({"planes_per_voxel": 17})",
+                                R"({"back_trace_refinements": 5})", R"({"min_cosine": 1})",
+                                R"({"intensity_correction": 1})"}) {
+            INFO(bad);
+            const Failure b = failureOf(
+                glassInFog(std::string(R"("light_transport": {"plane_sweep": )") + bad + "}"));
+            CHECK(b.where.rfind("glass.json:/render/light_transport/plane_sweep/", 0) == 0);
+        }
+    }
+    SECTION("a point light inside the box cannot be swept: one line, before any work") {
+        std::string text = glassInFog(R"("light_transport": {"method": "plane_sweep"})");
+        const std::string from = R"("position": [0, 3, 0])";
+        text.replace(text.find(from), from.size(), R"("position": [0, 0.5, 0])");
+        Scene scene = parse(text);
+        try {
+            eikon::FrameRenderer(scene, eikon::Backend::Cpu).render(0);
+            FAIL("no error");
+        } catch (const eikon::Error& e) {
+            CHECK_THAT(std::string(e.what()), Contains("outside the face its light enters"));
+        }
+    }
+    SECTION("every setting reruns it; other methods' settings do not") {
+        Scene base = parse(glassInFog(""));
+        eikon::test::setTransportMethod(base, "plane_sweep");
+        eikon::FrameRenderer renderer(base, eikon::Backend::Cpu);
+        renderer.render(0);
+        REQUIRE(renderer.transportRuns("plane_sweep") == 1);
+        renderer.render(0);
+        CHECK(renderer.transportRuns("plane_sweep") == 1);
+        int runs = 1;
+        Scene next = renderer.scene();
+        for (const char* patch : {R"({"plane_sweep": {"planes_per_voxel": 2}})",
+                                  R"({"plane_sweep": {"back_trace_refinements": 2}})",
+                                  R"({"plane_sweep": {"intensity_correction": false}})",
+                                  R"({"plane_sweep": {"min_cosine": 0.3}})"}) {
+            INFO(patch);
+            eikon::patchLightTransport(next, patch);
+            renderer.render({0, next});
+            CHECK(renderer.transportRuns("plane_sweep") == ++runs);
+        }
+        eikon::test::setPhotonSetting(next, "per_side", 20);
+        renderer.render({0, next});
+        CHECK(renderer.transportRuns("plane_sweep") == runs);
+    }
+    SECTION("a GPU run says, in one line, that it runs on the CPU twin only so far") {
+        Scene scene = parse(glassInFog(""));
+        eikon::test::setTransportMethod(scene, "plane_sweep");
+        try {
+            eikon::FrameRenderer(scene, eikon::Backend::Gpu).render(0);
+            FAIL("no error");
+        } catch (const eikon::Error& e) {
+            CHECK_THAT(std::string(e.what()), Contains("--backend cpu"));
+        }
+    }
+}
+
 // Every registered method, run on the CPU twin, fills the output contract the view pass reads:
 // per-light transmittance for the lights lit straight, fluence and direction (and the receiver
 // map) for the lights lit through the fluence; and it lights the fog (a method that produced

@@ -1,0 +1,81 @@
+#pragma once
+// Plane-by-plane semi-Lagrangian light propagation (Magnus's thesis, ch. 4.2; the per-texel
+// step is shaders/shared/plane_sweep.h): the CPU twin. Each light's 2D buffer advances slice by
+// slice along the volume axis its light travels most along, `planesPerVoxel` planes a voxel;
+// what the buffer holds at every voxel-centre plane becomes that slice of the output contract's
+// fluence and mean-direction volumes (render/light_transport.h), so every view pass and bench
+// reads it as it reads the photons'. The buffers themselves hold three planes of texels whatever
+// the volume's depth (PlaneSweepMemory reports both).
+//
+// Deterministic: every texel of a plane is computed from the previous plane alone, in any
+// order, with no sums across threads; the same bits for any thread count.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "core/dense_grid.h"
+#include "render/refraction_volume.h"
+#include "render/view_params.h"
+
+namespace eikon {
+
+// Every member is 4 bytes: the cache key takes the struct's bytes.
+struct PlaneSweepSettings {
+    int planesPerVoxel = 1;        // planes between two voxel centres along the sweep axis
+    int backTraceRefinements = 1;  // fixed-point refinements of each texel's back-trace
+    int intensityCorrection = 1;   // the intensity law (S_{i−1}/S_i); 0: light is only moved
+    // Light whose direction comes within this cosine of the planes is lost (a sweep cannot
+    // carry light that does not cross its planes).
+    float minCosine = 0.2f;
+};
+
+// How one light is swept: along `axis` (u, w the plane's axes), toward +axis when order is +1.
+struct PlaneSweepPlan {
+    int axis = 2, u = 0, w = 1, order = 1;
+    glm::ivec2 size{0};  // texels of a plane (the volume's resolution along u and w)
+    int planes = 0;      // planes swept, the first on the first voxel-centre slice
+};
+
+// The sweep of light l. Throws eikon::Error where a point or spot light is not outside the face
+// its sweep enters through (the sweep needs every ray to cross the planes forward).
+PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int light, const PlaneSweepSettings& s);
+
+// What a run allocates, in bytes.
+struct PlaneSweepMemory {
+    size_t bufferBytes = 0;  // the light buffers: two planes of light and direction, one of traces
+    size_t outputBytes = 0;  // the fluence and mean-direction volumes written for the view
+};
+
+struct PlaneSweepResultCpu {
+    // x fastest, the photons' units: rgb Σ flux·length per voxel (fluence rate × voxel volume);
+    // xyz Σ its luminance × the light's unit direction.
+    std::vector<glm::vec4> fluence;
+    std::vector<glm::vec4> direction;
+    // Irradiance (rgb) per receiver map texel (render/receiver_map.h): the light the receivers
+    // stopped, gathered on their front faces.
+    std::vector<glm::vec4> receiverMap;
+    int64_t texels = 0;      // texels of a plane, summed over the lights swept
+    int64_t texelSteps = 0;  // texel updates, all planes and lights
+    int64_t texelsLost = 0;  // of them, where the light turned within minCosine of the planes
+    PlaneSweepMemory memory;
+};
+
+// Sees each light's buffer at every voxel-centre plane: the light, the slice index along the
+// plan's axis, and the plane's light (rgb: irradiance on the plane) and direction (xyz: v =
+// n dx/ds; w: 1 where lit), u fastest.
+using PlaneSweepObserver = std::function<void(int lightIndex, const PlaneSweepPlan& plan, int slice,
+                                              const std::vector<glm::vec4>& planeLight,
+                                              const std::vector<glm::vec4>& planeDirection)>;
+
+// Sweeps every light that comes through the fluence (lightInFluence). `gradient` is the ∇n
+// volume (xyz: ∇n, w: n). Receivers stop the light that crosses them (their maps gather it).
+PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
+                                   const std::vector<const DenseGrid*>& slotGrids,
+                                   const RefractionVolumeCpu& gradient,
+                                   const PlaneSweepSettings& settings,
+                                   const PlaneSweepObserver& observer = {});
+
+}  // namespace eikon

@@ -1,0 +1,89 @@
+#include "render/transport/plane_sweep/plane_sweep_transport.h"
+
+#include "core/error.h"
+#include "core/memory_limit.h"
+#include "render/input_key.h"
+
+namespace eikon {
+namespace {
+
+using json::Object;
+using json::Range;
+
+// Past 16 planes a voxel the trilinear fields change too little between planes to matter.
+constexpr std::int64_t kMaxPlanesPerVoxel = 16;
+// Each refinement costs a bilinear fetch and a ∇n sample; two already reach the float's digits.
+constexpr std::int64_t kMaxRefinements = 4;
+
+}  // namespace
+
+PlaneSweepTransportSettings readPlaneSweepTransportSettings(const json::Value* section) {
+    PlaneSweepTransportSettings s;
+    if (!section) return s;
+    Object object(*section, "the plane sweep settings");
+    s.where = section->where();
+    if (auto planes = object.optional("planes_per_voxel"))
+        s.sweep.planesPerVoxel = static_cast<int>(planes->integer(1, kMaxPlanesPerVoxel));
+    if (auto refinements = object.optional("back_trace_refinements"))
+        s.sweep.backTraceRefinements = static_cast<int>(refinements->integer(0, kMaxRefinements));
+    if (auto correction = object.optional("intensity_correction"))
+        s.sweep.intensityCorrection = correction->boolean() ? 1 : 0;
+    if (auto cosine = object.optional("min_cosine"))
+        s.sweep.minCosine = cosine->floatNumber(Range::closedOpen(0.01, 1.0));
+    object.finish();
+    return s;
+}
+
+PlaneSweepTransport::PlaneSweepTransport(PlaneSweepTransportSettings settings,
+                                         TransportDevice device)
+    : settings_(std::move(settings)), device_(device) {}
+
+TransportNeeds PlaneSweepTransport::needs() const {
+    TransportNeeds n;
+    n.gradient = true;  // light bends by Δs ∇n between planes
+    return n;
+}
+
+void PlaneSweepTransport::configure(const Scene& scene, ViewSetup& setup) {
+    const std::string where =
+        settings_.where.empty() ? scene.path + ":/render/light_transport" : settings_.where;
+    if (!lightAllThroughFluence(scene, setup)) return;
+    for (int l = 0; l < shared::lightCount(setup.params); ++l)
+        planPlaneSweep(setup, l, settings_.sweep);  // a light it cannot sweep fails here
+    // The output volumes (the buffers are a few planes).
+    const glm::ivec3 res(setup.params.resolution);
+    const double voxels = double(res.x) * double(res.y) * double(res.z);
+    checkMemory(where, 2.0 * voxels * double(sizeof(glm::vec4)),
+                "the plane sweep's fluence and direction volumes", "lower the render resolution");
+}
+
+std::vector<unsigned char> PlaneSweepTransport::cacheKey(
+    const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const {
+    if (!shared::readsFluence(setup.params)) return {};
+    std::vector<unsigned char> key = transportInputsKey(setup, slotGrids);
+    appendReceiverMapsKey(setup, key);  // receivers stop the light and fill their maps
+    static_assert(sizeof(PlaneSweepSettings) == 4 * 4, "PlaneSweepSettings gained padding");
+    appendBytes(key, &settings_.sweep, sizeof(settings_.sweep));
+    return key;
+}
+
+void PlaneSweepTransport::runCpu(const TransportInputsCpu& in) {
+    StageScope stage(in.timer, "plane_sweep");
+    result_ = sweepLightsCpu(in.setup, in.slotGrids, in.gradient, settings_.sweep);
+    stats_ = TransportStats{};
+    // A texel is the sweep's particle: it takes a step a plane.
+    stats_.steps = result_.texelSteps;
+    stats_.particlesTraced = result_.texels;
+    stats_.particlesCut = result_.texelsLost;
+}
+
+void PlaneSweepTransport::runGpu(const TransportInputsGpu&) {
+    throw Error("render.light_transport.method \"plane_sweep\"",
+                "runs on the CPU twin only so far: render with --backend cpu");
+}
+
+TransportOutputCpu PlaneSweepTransport::outputCpu() const {
+    return fluenceOutputOf(result_.fluence, result_.direction, result_.receiverMap);
+}
+
+}  // namespace eikon

@@ -1,0 +1,56 @@
+#pragma once
+// Light transport method "plane_sweep": Magnus's plane-by-plane semi-Lagrangian light
+// propagation (thesis ch. 4.2). Each light's 2D buffer advances slice by slice through the
+// volume; every texel looks back along its direction to the previous plane, attenuates, bends by
+// Δs∇n and corrects its intensity by the ratio of footprint areas, so curved light and caustics
+// come without particles and without noise (render/transport/plane_sweep/plane_sweep_cpu.h).
+//
+// This step writes the swept planes into the output contract's fluence volumes, so every view
+// pass and `eikon bench methods` read it like the other methods. The thesis's viewing rays that
+// advance with the planes in 2D buffers (no volume at all) come next (docs/methods.md).
+//
+// Settings: render.light_transport.plane_sweep (docs/scene-format.md).
+// CPU twin only for now: a GPU run says so in one line.
+#include <string>
+
+#include "core/json_reader.h"
+#include "render/light_transport.h"
+#include "render/transport/plane_sweep/plane_sweep_cpu.h"
+
+namespace eikon {
+
+struct PlaneSweepTransportSettings {
+    PlaneSweepSettings sweep;
+    std::string where;  // the section's file and JSON pointer, for messages
+};
+
+// The settings section; null: all defaults. Throws eikon::Error at the offending key.
+PlaneSweepTransportSettings readPlaneSweepTransportSettings(const json::Value* section);
+
+class PlaneSweepTransport final : public LightTransport {
+public:
+    PlaneSweepTransport(PlaneSweepTransportSettings settings, TransportDevice device);
+
+    std::string name() const override { return "plane_sweep"; }
+    TransportNeeds needs() const override;
+    void configure(const Scene& scene, ViewSetup& setup) override;
+    std::vector<unsigned char> cacheKey(
+        const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const override;
+    void runCpu(const TransportInputsCpu& in) override;
+    void runGpu(const TransportInputsGpu& in) override;
+    TransportOutputCpu outputCpu() const override;
+    void bindGpu() const override {}
+    TransportStats stats() const override { return stats_; }
+    std::vector<std::string> stages() const override { return {"plane_sweep"}; }
+
+    // What the last run allocated.
+    const PlaneSweepMemory& memory() const { return result_.memory; }
+
+private:
+    PlaneSweepTransportSettings settings_;
+    TransportDevice device_;
+    PlaneSweepResultCpu result_;
+    TransportStats stats_;
+};
+
+}  // namespace eikon
