@@ -97,8 +97,9 @@ public:
         throw Error(path_, "the NRRD header has no \"" + key + "\" field");
     }
     [[noreturn]] void fail(const std::string& key, const std::string& expected) const {
+        const std::string* value = find(key);  // null for a key the header spells otherwise
         throw Error(path_, "NRRD field \"" + key + "\": expected " + expected + ", got \"" +
-                               printable(*find(key)) + "\"");
+                               (value ? printable(*value) : std::string()) + "\"");
     }
 
 private:
@@ -366,14 +367,15 @@ ScanLayout readNrrdHeader(const std::string& path) {
         fields.fail("byte skip", "an integer >= 0 (−1 is for raw samples only)");
     const std::int64_t lineSkip = readSkip(fields, "line skip", 0);
 
-    const std::string* dataFile = fields.find("data file");
-    if (!dataFile) dataFile = fields.find("datafile");
+    // NRRD spells it "data file" or "datafile"; messages name the spelling the header used.
+    const std::string dataKey = fields.find("data file") ? "data file" : "datafile";
+    const std::string* dataFile = fields.find(dataKey);
     if (dataFile) {
         const std::string name = trim(*dataFile);
         // The name becomes the `where` of later messages: no control characters in it.
-        if (name.empty() || hasControlCharacter(name)) fields.fail("data file", "a file name");
+        if (name.empty() || hasControlCharacter(name)) fields.fail(dataKey, "a file name");
         if (name.rfind("LIST", 0) == 0 || name.find('%') != std::string::npos)
-            fields.fail("data file", "one file (lists and numbered files are not read)");
+            fields.fail(dataKey, "one file (lists and numbered files are not read)");
         const fs::path p(name);
         layout.dataFile = p.is_absolute() ? name : (fs::path(path).parent_path() / p).string();
         if (!fs::is_regular_file(layout.dataFile, ec))

@@ -198,6 +198,10 @@ TEST_CASE("NRRD headers that are wrong get one line naming the field", "[scan]")
     check(header("uchar", "raw", "data file: missing.raw\n"), "its data file");
     check(header("uchar", "raw", "data file: LIST\n"),
           "NRRD field \"data file\": expected one file");
+    // The other spelling, named as the header spells it (fuzz_nrrd found its message read a
+    // field that was not there).
+    check(header("uchar", "raw", "datafile: v%03d.raw\n"),
+          "NRRD field \"datafile\": expected one file");
     check(header("uchar", "raw", "spacings: 1 0 1\n\n") + data,
           "NRRD field \"spacings\": expected three positive numbers");
     check(header("uchar", "raw", "space directions: (1,0,0) (0,1,0)\n\n") + data,
