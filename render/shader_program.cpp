@@ -455,6 +455,10 @@ void ShaderProgram::setIVec3(const std::string& uniform, const glm::ivec3& value
     glProgramUniform3iv(id_, uniformLocation(uniform), 1, glm::value_ptr(value));
 }
 
+void ShaderProgram::setIVec4(const std::string& uniform, const glm::ivec4& value) const {
+    glProgramUniform4iv(id_, uniformLocation(uniform), 1, glm::value_ptr(value));
+}
+
 void ShaderProgram::setUVec3(const std::string& uniform, const glm::uvec3& value) const {
     glProgramUniform3uiv(id_, uniformLocation(uniform), 1, glm::value_ptr(value));
 }

@@ -79,6 +79,7 @@ public:
     void setVec3(const std::string& uniform, const glm::vec3& value) const;
     void setVec4(const std::string& uniform, const glm::vec4& value) const;
     void setIVec3(const std::string& uniform, const glm::ivec3& value) const;
+    void setIVec4(const std::string& uniform, const glm::ivec4& value) const;
     void setUVec3(const std::string& uniform, const glm::uvec3& value) const;
     void setMat4(const std::string& uniform, const glm::mat4& value) const;
 

@@ -40,6 +40,14 @@
 #define EK_IMAGE_BLUR_SOURCE 1    // gaussian_blur.comp reads (R32F)
 #define EK_IMAGE_BLUR_TARGET 2    //   and writes
 #define EK_IMAGE_COVERAGE 1       // voxelize_coverage.comp writes (R32F)
+// plane_sweep.comp: the light buffers (RGBA32F 2D) and the output contract's volumes it fills.
+#define EK_IMAGE_SWEEP_LIGHT_IN 0
+#define EK_IMAGE_SWEEP_DIRECTION_IN 1
+#define EK_IMAGE_SWEEP_TRACE 2
+#define EK_IMAGE_SWEEP_LIGHT_OUT 3
+#define EK_IMAGE_SWEEP_DIRECTION_OUT 4
+#define EK_IMAGE_SWEEP_FLUENCE 5
+#define EK_IMAGE_SWEEP_FLUENCE_DIRECTION 6
 
 // ---- Shader storage buffers -------------------------------------------------------------------
 #define EK_SSBO_VIEW_PARAMS 0        // GpuViewParams (render/params_buffer.cpp), every volume pass
@@ -51,6 +59,7 @@
 #define EK_SSBO_RECEIVER_MAP 8       // view.comp: irradiance per receiver map texel
 #define EK_SSBO_PHOTON_ROUNDS 9      // photon_trace.comp, photon_round.comp: rounds and lists
 #define EK_SSBO_PHOTON_EXTINGUISHED 10  // photon_trace.comp: flux lost so far, per photon
+#define EK_SSBO_SWEEP_COUNTERS 11       // plane_sweep.comp: texels whose light was lost
 // The voxelizer's passes (voxelize_*.comp) run apart from the volume passes: binding 0 is theirs
 // until render/params_buffer.cpp binds the parameters again before the next volume pass.
 #define EK_SSBO_VOXELIZE_POSITIONS 0  // voxelize_toggle.comp: vertex positions

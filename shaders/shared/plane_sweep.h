@@ -40,6 +40,9 @@
 //   vec4 fetchSweepLight(ivec2 texel)      the previous plane's light (rgb)
 //   vec4 fetchSweepDirection(ivec2 texel)  the previous plane's direction (xyz: v; w: 1 if lit)
 //   vec4 fetchSweepTrace(ivec2 texel)      this plane's back-traced points (sweepBackTrace)
+//
+// The GPU runs it in shaders/plane_sweep.comp, a dispatch per pass and plane
+// (render/transport/plane_sweep/plane_sweep_gpu.cpp).
 
 #ifndef EIKON_SHARED_PLANE_SWEEP_TYPES_H
 #define EIKON_SHARED_PLANE_SWEEP_TYPES_H
@@ -246,6 +249,26 @@ int sweepReceiverHit(GpuPlaneSweep s, ivec2 t, EK_OUT(vec2) mapCoord, EK_OUT(boo
     beyond = sweepSegmentTransmittance(worldToVolumeIndex(hit),
                                        sweepPoint(s, vec2(t) + vec2(0.5f), s.place.x));
     return r;
+}
+
+// What a texel of a voxel-centre plane adds to that voxel of the output contract's volumes: the
+// fluence (rgb: the irradiance on the plane over cos θ, times the voxel volume, the photons'
+// Σ flux·length) and its luminance times the light's unit direction. False where the texel holds
+// no light direction.
+bool sweepDepositTexel(GpuPlaneSweep s, vec4 light, vec4 direction, EK_OUT(vec3) fluence,
+                       EK_OUT(vec3) weightedDirection) {
+    fluence = vec3(0.0f);
+    weightedDirection = vec3(0.0f);
+    const vec3 h = volumeVoxelSize();
+    const float voxelVolume = h.x * h.y * h.z;
+    const vec3 v = vec3(direction);
+    const float speed = length(v);
+    if (direction.w <= 0.0f || !(speed > 0.0f)) return false;
+    const float cosine = abs(v[s.axes.x]) / speed;
+    fluence = vec3(light) * (voxelVolume / cosine);
+    const float luminance = dot(fluence, vec3(0.2126f, 0.7152f, 0.0722f));
+    weightedDirection = luminance * v / speed;
+    return true;
 }
 
 #endif

@@ -37,7 +37,7 @@ std::vector<Variant> variants() {
           "voxelize_scan.comp", "voxelize_coverage.comp", "gaussian_blur.comp", "display.vert",
           "display.frag", "test/gid_double.comp", "test/photons_compile.comp",
           "test/std430_view_params.comp", "test/std430_particles.comp",
-          "test/wavefront_compile.comp", "test/plane_sweep_compile.comp"})
+          "test/wavefront_compile.comp"})
         list.push_back({file, none});
     // View: texture-unit filtering (EK_HARDWARE_TRILINEAR) × one channel a dispatch (dispersion).
     for (bool trilinear : {false, true})
@@ -52,6 +52,9 @@ std::vector<Variant> variants() {
         list.push_back({file, none});
         list.push_back({file, {"EK_HARDWARE_TRILINEAR"}});
     }
+    // The plane sweep: exact math.
+    list.push_back({"plane_sweep.comp", none});
+    list.push_back({"plane_sweep.comp", {"EK_EXACT_MATH"}});
     // Photons: exact math × the generating pass.
     for (bool exact : {false, true})
         for (bool generate : {false, true}) {

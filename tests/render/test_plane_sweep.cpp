@@ -12,8 +12,6 @@
 
 #include <tbb/global_control.h>
 
-#include "render/gl_context.h"
-#include "render/shader_program.h"
 #include "render/transport/light_volumes/light_volume.h"
 #include "render/transport/plane_sweep/plane_sweep_cpu.h"
 #include "support/grin_lens.h"
@@ -472,9 +470,4 @@ TEST_CASE("the light buffers scale with a plane, not with the volume's depth", "
     CHECK(shallow.bufferBytes ==
           5 * 32 * 32 * sizeof(glm::vec4));              // 2 × (light, direction) + traces
     CHECK(deep.outputBytes == 8 * shallow.outputBytes);  // the output volumes are the volume's
-}
-
-TEST_CASE("the shared plane sweep code compiles as GLSL 4.30", "[plane_sweep][gpu]") {
-    auto context = eikon::createHeadlessContext();
-    CHECK_NOTHROW(eikon::ShaderProgram::compute("test/plane_sweep_compile.comp"));
 }

@@ -11,9 +11,6 @@
 #include "render/volume_kernels_cpu.h"
 
 EK_NAMESPACE_BEGIN
-#define EK_PLANE_SWEEP_TYPES_ONLY
-#include "shaders/shared/plane_sweep.h"
-#undef EK_PLANE_SWEEP_TYPES_ONLY
 
 // The sweep shaders' world: the volumes, and three plane buffers (the previous plane's light and
 // direction, this plane's back-traced points), u fastest.
@@ -45,31 +42,25 @@ glm::vec3 travelDirection(const shared::GpuLight& light, const shared::GpuViewPa
     return centre - glm::vec3(light.position);
 }
 
-// Sums one voxel-centre plane of a light into the output volumes: fluence rate E = L / cos θ
-// (L is irradiance on the plane) times the voxel volume.
-void depositPlane(const PlaneSweepPlan& plan, int slice, const std::vector<glm::vec4>& light,
-                  const std::vector<glm::vec4>& direction, shared::PlaneSweepKernelCpu& k,
-                  PlaneSweepResultCpu& out) {
-    const glm::vec3 h = k.volumeVoxelSize();
-    const float voxelVolume = h.x * h.y * h.z;
+// Sums one voxel-centre plane of a light into the output volumes (sweepDepositTexel).
+void depositPlane(const shared::GpuPlaneSweep& sweep, const PlaneSweepPlan& plan, int slice,
+                  const std::vector<glm::vec4>& light, const std::vector<glm::vec4>& direction,
+                  shared::PlaneSweepKernelCpu& k, PlaneSweepResultCpu& out) {
     tbb::parallel_for(
         tbb::blocked_range<int>(0, plan.size.y), [&](const tbb::blocked_range<int>& r) {
             for (int b = r.begin(); b != r.end(); ++b)
                 for (int a = 0; a < plan.size.x; ++a) {
                     const size_t t = size_t(b) * size_t(plan.size.x) + size_t(a);
-                    const glm::vec3 v(direction[t]);
-                    const float speed = glm::length(v);
-                    if (direction[t].w <= 0.0f || !(speed > 0.0f)) continue;
-                    const float cosine = std::abs(v[plan.axis]) / speed;
-                    const glm::vec3 fluence = glm::vec3(light[t]) * (voxelVolume / cosine);
+                    glm::vec3 fluence, weighted;
+                    if (!k.sweepDepositTexel(sweep, light[t], direction[t], fluence, weighted))
+                        continue;
                     glm::ivec3 voxel;
                     voxel[plan.axis] = slice;
                     voxel[plan.u] = a;
                     voxel[plan.w] = b;
                     const size_t i = k.voxelIndex(voxel);
                     out.fluence[i] += glm::vec4(fluence, 0.0f);
-                    const float lum = glm::dot(fluence, glm::vec3(0.2126f, 0.7152f, 0.0722f));
-                    out.direction[i] += glm::vec4(lum * v / speed, 0.0f);
+                    out.direction[i] += glm::vec4(weighted, 0.0f);
                 }
         });
 }
@@ -77,9 +68,7 @@ void depositPlane(const PlaneSweepPlan& plan, int slice, const std::vector<glm::
 // The most irradiance a texel may hold: the light's brightest irradiance on the volume's box
 // (at the box point nearest a point light) times the box's whole surface in texels, as if all
 // the light that can enter were gathered in one texel.
-float irradianceCeiling(shared::PlaneSweepKernelCpu& k, int l, const PlaneSweepPlan& plan,
-                        glm::ivec3 res) {
-    const shared::GpuViewParams& p = k.params;
+float irradianceCeiling(const shared::GpuViewParams& p, int l, const PlaneSweepPlan& plan) {
     const glm::vec3 nearest =
         glm::clamp(glm::vec3(p.lights[l].position), glm::vec3(p.volumeMin), glm::vec3(p.volumeMax));
     glm::vec3 brightest = glm::vec3(p.lights[l].radiance);
@@ -87,8 +76,8 @@ float irradianceCeiling(shared::PlaneSweepKernelCpu& k, int l, const PlaneSweepP
         const float d = std::max(glm::length(glm::vec3(p.lights[l].position) - nearest), 1e-6f);
         brightest /= d * d;  // the spot's falloff only lowers it
     }
-    const double faces = double(plan.size.x) * plan.size.y +
-                         2.0 * (double(plan.size.x) + plan.size.y) * res[plan.axis];
+    const double faces =
+        double(plan.size.x) * plan.size.y + 2.0 * (double(plan.size.x) + plan.size.y) * plan.depth;
     const double ceiling = double(std::max({brightest.x, brightest.y, brightest.z})) * faces;
     return float(std::min(ceiling, 1e30));
 }
@@ -197,7 +186,10 @@ PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int l, const PlaneSweepSet
     plan.order = d[plan.axis] >= 0.0f ? 1 : -1;
     const glm::ivec3 res(p.resolution);
     plan.size = glm::ivec2(res[plan.u], res[plan.w]);
-    plan.planes = (res[plan.axis] - 1) * std::max(s.planesPerVoxel, 1) + 1;
+    plan.depth = res[plan.axis];
+    plan.perVoxel = std::max(s.planesPerVoxel, 1);
+    plan.planes = (plan.depth - 1) * plan.perVoxel + 1;
+    plan.light = l;
     if (shared::lightType(light) != EK_LIGHT_DIRECTIONAL) {
         // Every ray must enter through the face the sweep starts from and cross planes forward.
         const float position = light.position[plan.axis];
@@ -210,6 +202,29 @@ PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int l, const PlaneSweepSet
                             "sweep needs it outside the face its light enters through");
     }
     return plan;
+}
+
+shared::GpuPlaneSweep planeSweepStep(const ViewSetup& setup, const PlaneSweepPlan& plan,
+                                     const PlaneSweepSettings& settings, int j) {
+    shared::GpuPlaneSweep sweep{};
+    sweep.axes = glm::ivec4(plan.axis, plan.u, plan.w, plan.order);
+    sweep.plane = glm::ivec4(plan.light,
+                             (settings.intensityCorrection ? EK_SWEEP_CORRECT_INTENSITY : 0) |
+                                 (j > 0 ? EK_SWEEP_PREVIOUS_STORED : 0),
+                             plan.size.x, plan.size.y);
+    const float offset = 0.5f + float(j) / float(plan.perVoxel);
+    sweep.place.x = plan.order > 0 ? offset : float(plan.depth) - offset;
+    const float face = plan.order > 0 ? 0.0f : float(plan.depth);
+    sweep.place.y = j == 0 ? face : sweep.place.x - float(plan.order) / float(plan.perVoxel);
+    sweep.place.z = settings.minCosine;
+    sweep.place.w = float(std::max(settings.backTraceRefinements, 0));
+    sweep.limit.x = irradianceCeiling(setup.params, plan.light, plan);
+    return sweep;
+}
+
+int planeSweepSlice(const PlaneSweepPlan& plan, int j) {
+    if (j % plan.perVoxel != 0) return -1;
+    return plan.order > 0 ? j / plan.perVoxel : plan.depth - 1 - j / plan.perVoxel;
 }
 
 PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
@@ -228,7 +243,6 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
     shared::PlaneSweepKernelCpu kernel{{p}};
     for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
     kernel.gradient = gradient.data();
-    const int perVoxel = std::max(settings.planesPerVoxel, 1);
     // Flux gathered by the receivers' map texels, summed in one fixed order.
     std::vector<glm::dvec3> receiverFlux(receiverMapTexels(p), glm::dvec3(0.0));
 
@@ -241,21 +255,8 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
             nextDirection(texels), trace(texels);
         out.memory.bufferBytes = std::max(out.memory.bufferBytes, 5 * texels * sizeof(glm::vec4));
 
-        shared::GpuPlaneSweep sweep{};
-        sweep.axes = glm::ivec4(plan.axis, plan.u, plan.w, plan.order);
-        sweep.place.z = settings.minCosine;
-        sweep.place.w = float(std::max(settings.backTraceRefinements, 0));
-        sweep.limit.x = irradianceCeiling(kernel, l, plan, res);
-        const float face = plan.order > 0 ? 0.0f : float(res[plan.axis]);
         for (int j = 0; j < plan.planes; ++j) {
-            const float offset = 0.5f + float(j) / float(perVoxel);
-            sweep.place.x = plan.order > 0 ? offset : float(res[plan.axis]) - offset;
-            sweep.place.y = j == 0 ? face : sweep.place.x - float(plan.order) / float(perVoxel);
-            sweep.plane =
-                glm::ivec4(l,
-                           (settings.intensityCorrection ? EK_SWEEP_CORRECT_INTENSITY : 0) |
-                               (j > 0 ? EK_SWEEP_PREVIOUS_STORED : 0),
-                           plan.size.x, plan.size.y);
+            const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
             shared::PlaneSweepKernelCpu k = kernel;
             k.sweepLight = light.data();
             k.sweepDirection = direction.data();
@@ -280,9 +281,9 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
             direction.swap(nextDirection);
             out.texelSteps += int64_t(texels);
             for (const glm::vec4& tr : trace) out.texelsLost += tr.z > 0.0f ? 0 : 1;
-            if (j % perVoxel != 0) continue;
-            const int slice = plan.order > 0 ? j / perVoxel : res[plan.axis] - 1 - j / perVoxel;
-            depositPlane(plan, slice, light, direction, k, out);
+            const int slice = planeSweepSlice(plan, j);
+            if (slice < 0) continue;
+            depositPlane(sweep, plan, slice, light, direction, k, out);
             if (observer) observer(l, plan, slice, light, direction);
         }
     }

@@ -20,6 +20,12 @@
 #include "render/refraction_volume.h"
 #include "render/view_params.h"
 
+EK_NAMESPACE_BEGIN
+#define EK_PLANE_SWEEP_TYPES_ONLY
+#include "shaders/shared/plane_sweep.h"
+#undef EK_PLANE_SWEEP_TYPES_ONLY
+EK_NAMESPACE_END
+
 namespace eikon {
 
 // Every member is 4 bytes: the cache key takes the struct's bytes.
@@ -37,11 +43,21 @@ struct PlaneSweepPlan {
     int axis = 2, u = 0, w = 1, order = 1;
     glm::ivec2 size{0};  // texels of a plane (the volume's resolution along u and w)
     int planes = 0;      // planes swept, the first on the first voxel-centre slice
+    int depth = 0;       // voxels along the axis
+    int perVoxel = 1;    // planes between two voxel centres
+    int light = 0;
 };
 
 // The sweep of light l. Throws eikon::Error where a point or spot light is not outside the face
 // its sweep enters through (the sweep needs every ray to cross the planes forward).
 PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int light, const PlaneSweepSettings& s);
+
+// Plane j (0 ≤ j < plan.planes) of a light's sweep: the shared step's parameters, the same for
+// the CPU twin and the GPU dispatch.
+shared::GpuPlaneSweep planeSweepStep(const ViewSetup& setup, const PlaneSweepPlan& plan,
+                                     const PlaneSweepSettings& settings, int j);
+// The volume slice plane j lies on (the output contract's), or −1 between voxel centres.
+int planeSweepSlice(const PlaneSweepPlan& plan, int j);
 
 // What a run allocates, in bytes.
 struct PlaneSweepMemory {

@@ -38,6 +38,8 @@ PlaneSweepTransport::PlaneSweepTransport(PlaneSweepTransportSettings settings,
                                          TransportDevice device)
     : settings_(std::move(settings)), device_(device) {}
 
+PlaneSweepTransport::~PlaneSweepTransport() = default;
+
 TransportNeeds PlaneSweepTransport::needs() const {
     TransportNeeds n;
     n.gradient = true;  // light bends by Δs ∇n between planes
@@ -77,9 +79,25 @@ void PlaneSweepTransport::runCpu(const TransportInputsCpu& in) {
     stats_.particlesCut = result_.texelsLost;
 }
 
-void PlaneSweepTransport::runGpu(const TransportInputsGpu&) {
-    throw Error("render.light_transport.method \"plane_sweep\"",
-                "runs on the CPU twin only so far: render with --backend cpu");
+void PlaneSweepTransport::runGpu(const TransportInputsGpu& in) {
+    if (!gpu_) gpu_ = std::make_unique<PlaneSweepGpu>(device_.exactMath);
+    gpu_->compute(in.setup, in.fields, in.refraction, settings_.sweep, in.timer);
+    stats_ = TransportStats{};
+    stats_.steps = gpu_->texelSteps();
+    stats_.particlesTraced = gpu_->texels();
+    stats_.particlesCut = gpu_->texelsLost();
+}
+
+void PlaneSweepTransport::bindGpu() const {
+    if (gpu_) gpu_->bind();
+}
+
+const PlaneSweepMemory& PlaneSweepTransport::memory() const {
+    return device_.gpu && gpu_ ? gpu_->memory() : result_.memory;
+}
+
+PlaneSweepResultCpu PlaneSweepTransport::downloadGpu() const {
+    return gpu_ ? gpu_->download() : PlaneSweepResultCpu{};
 }
 
 TransportOutputCpu PlaneSweepTransport::outputCpu() const {

@@ -10,12 +10,15 @@
 // advance with the planes in 2D buffers (no volume at all) come next (docs/methods.md).
 //
 // Settings: render.light_transport.plane_sweep (docs/scene-format.md).
-// CPU twin only for now: a GPU run says so in one line.
+// On the GPU (plane_sweep_gpu.h) without receivers so far: a GPU run of a scene with one says so
+// in one line.
+#include <memory>
 #include <string>
 
 #include "core/json_reader.h"
 #include "render/light_transport.h"
 #include "render/transport/plane_sweep/plane_sweep_cpu.h"
+#include "render/transport/plane_sweep/plane_sweep_gpu.h"
 
 namespace eikon {
 
@@ -30,6 +33,7 @@ PlaneSweepTransportSettings readPlaneSweepTransportSettings(const json::Value* s
 class PlaneSweepTransport final : public LightTransport {
 public:
     PlaneSweepTransport(PlaneSweepTransportSettings settings, TransportDevice device);
+    ~PlaneSweepTransport() override;
 
     std::string name() const override { return "plane_sweep"; }
     TransportNeeds needs() const override;
@@ -39,17 +43,20 @@ public:
     void runCpu(const TransportInputsCpu& in) override;
     void runGpu(const TransportInputsGpu& in) override;
     TransportOutputCpu outputCpu() const override;
-    void bindGpu() const override {}
+    void bindGpu() const override;
     TransportStats stats() const override { return stats_; }
     std::vector<std::string> stages() const override { return {"plane_sweep"}; }
 
     // What the last run allocated.
-    const PlaneSweepMemory& memory() const { return result_.memory; }
+    const PlaneSweepMemory& memory() const;
+    // The last GPU run's volumes and counters, read back (tests).
+    PlaneSweepResultCpu downloadGpu() const;
 
 private:
     PlaneSweepTransportSettings settings_;
     TransportDevice device_;
     PlaneSweepResultCpu result_;
+    std::unique_ptr<PlaneSweepGpu> gpu_;
     TransportStats stats_;
 };
 

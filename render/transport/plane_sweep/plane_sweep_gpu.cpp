@@ -1,0 +1,207 @@
+#include "render/transport/plane_sweep/plane_sweep_gpu.h"
+
+#include <epoxy/gl.h>
+
+#include <string>
+
+#include "core/error.h"
+#include "render/gpu_timer.h"
+#include "render/refraction_volume.h"
+#include "render/shader_program.h"
+#include "render/volume_textures.h"
+#include "shaders/shared/bindings.h"
+
+namespace eikon {
+namespace {
+
+// plane_sweep.comp's passes.
+constexpr int kPassClear = 0;
+constexpr int kPassTrace = 1;
+constexpr int kPassAdvance = 2;
+constexpr int kPassDeposit = 3;
+
+constexpr GLuint kGroup = 8;  // plane_sweep.comp's local size along x and y
+
+GLuint groups(int n) {
+    return GLuint((n + int(kGroup) - 1) / int(kGroup));
+}
+
+void bindImage(GLuint unit, GLuint texture, bool layered) {
+    glBindImageTexture(unit, texture, 0, layered ? GL_TRUE : GL_FALSE, 0, GL_READ_WRITE,
+                       GL_RGBA32F);
+}
+
+void barrier() {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+std::vector<glm::vec4> downloadVolume(GLuint texture, glm::ivec3 res) {
+    std::vector<glm::vec4> out(size_t(res.x) * size_t(res.y) * size_t(res.z));
+    glBindTexture(GL_TEXTURE_3D, texture);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, out.data());
+    glBindTexture(GL_TEXTURE_3D, 0);
+    return out;
+}
+
+const char* const kWhere = "render.light_transport.method \"plane_sweep\"";
+
+}  // namespace
+
+PlaneSweepGpu::PlaneSweepGpu(bool exactMath) {
+    std::vector<std::string> defines;
+    if (exactMath) defines.push_back("EK_EXACT_MATH");
+    program_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("plane_sweep.comp", defines));
+    glGenBuffers(1, &counters_);
+}
+
+PlaneSweepGpu::~PlaneSweepGpu() {
+    glDeleteTextures(2, volumes_);
+    glDeleteTextures(5, planes_);
+    glDeleteBuffers(1, &counters_);
+}
+
+void PlaneSweepGpu::allocateVolumes(glm::ivec3 res) {
+    if (volumes_[0] && res == resolution_) return;
+    glDeleteTextures(2, volumes_);
+    glGenTextures(2, volumes_);
+    for (GLuint texture : volumes_) {
+        glBindTexture(GL_TEXTURE_3D, texture);
+        glTexStorage3D(GL_TEXTURE_3D, 1, GL_RGBA32F, res.x, res.y, res.z);
+        setVolumeSampling();
+    }
+    glBindTexture(GL_TEXTURE_3D, 0);
+    if (glGetError() != GL_NO_ERROR)
+        throw Error(kWhere, "the driver refused two RGBA32F volumes of " + std::to_string(res.x) +
+                                "x" + std::to_string(res.y) + "x" + std::to_string(res.z));
+    resolution_ = res;
+}
+
+void PlaneSweepGpu::allocatePlanes(glm::ivec2 size) {
+    if (planes_[0] && size == planeSize_) return;
+    glDeleteTextures(5, planes_);
+    glGenTextures(5, planes_);
+    for (GLuint texture : planes_) {
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, size.x, size.y);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    if (glGetError() != GL_NO_ERROR)
+        throw Error(kWhere, "the driver refused five RGBA32F planes of " + std::to_string(size.x) +
+                                "x" + std::to_string(size.y));
+    planeSize_ = size;
+}
+
+void PlaneSweepGpu::dispatchPlane(glm::ivec2 size) const {
+    glDispatchCompute(groups(size.x), groups(size.y), 1);
+    barrier();
+}
+
+void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
+                            const RefractionVolumesGpu& refraction,
+                            const PlaneSweepSettings& settings, GpuStageTimer* timer) {
+    const shared::GpuViewParams& p = setup.params;
+    if (shared::receiverCount(p) > 0)
+        throw Error(kWhere,
+                    "gathers light on receivers on the CPU twin only so far: render this scene "
+                    "with --backend cpu");
+    const glm::ivec3 res(p.resolution);
+    allocateVolumes(res);
+    texels_ = 0;
+    texelSteps_ = 0;
+    memory_ = PlaneSweepMemory{};
+    memory_.outputBytes = 2 * size_t(res.x) * size_t(res.y) * size_t(res.z) * sizeof(glm::vec4);
+
+    if (timer) timer->begin("plane_sweep");
+    fields.bind();
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
+    glBindTexture(GL_TEXTURE_3D, refraction.gradientTexture());
+    // The volumes written here may not stay bound for sampling.
+    for (GLuint unit : {EK_UNIT_FLUENCE, EK_UNIT_FLUENCE_DIRECTION}) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        glBindTexture(GL_TEXTURE_3D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    bindImage(EK_IMAGE_SWEEP_FLUENCE, volumes_[0], true);
+    bindImage(EK_IMAGE_SWEEP_FLUENCE_DIRECTION, volumes_[1], true);
+    const GLuint zero = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, counters_);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), &zero, GL_DYNAMIC_READ);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_SWEEP_COUNTERS, counters_);
+
+    program_->use();
+    program_->setInt("sweepPass", kPassClear);
+    glDispatchCompute(groups(res.x), groups(res.y), GLuint(res.z));
+    barrier();
+
+    for (int l = 0; l < shared::lightCount(p); ++l) {
+        if (!shared::lightInFluence(p, l)) continue;
+        const PlaneSweepPlan plan = planPlaneSweep(setup, l, settings);
+        allocatePlanes(plan.size);
+        const size_t texels = size_t(plan.size.x) * size_t(plan.size.y);
+        texels_ += int64_t(texels);
+        memory_.bufferBytes = std::max(memory_.bufferBytes, 5 * texels * sizeof(glm::vec4));
+        bindImage(EK_IMAGE_SWEEP_TRACE, planes_[4], false);
+        int in = 0;  // planes_[in] and planes_[2 + in] hold the previous plane
+        for (int j = 0; j < plan.planes; ++j) {
+            const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
+            program_->setIVec4("sweepAxes", sweep.axes);
+            program_->setIVec4("sweepPlane", sweep.plane);
+            program_->setVec4("sweepPlace", sweep.place);
+            program_->setVec4("sweepLimit", sweep.limit);
+            bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes_[in], false);
+            bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes_[2 + in], false);
+            bindImage(EK_IMAGE_SWEEP_LIGHT_OUT, planes_[1 - in], false);
+            bindImage(EK_IMAGE_SWEEP_DIRECTION_OUT, planes_[3 - in], false);
+            program_->setInt("sweepPass", kPassTrace);
+            dispatchPlane(plan.size);
+            program_->setInt("sweepPass", kPassAdvance);
+            dispatchPlane(plan.size);
+            in = 1 - in;
+            texelSteps_ += int64_t(texels);
+            const int slice = planeSweepSlice(plan, j);
+            if (slice < 0) continue;
+            bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes_[in], false);
+            bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes_[2 + in], false);
+            program_->setInt("sweepPass", kPassDeposit);
+            program_->setInt("depositSlice", slice);
+            dispatchPlane(plan.size);
+        }
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (timer) timer->end();
+    if (const GLenum err = glGetError(); err != GL_NO_ERROR)
+        throw Error(kWhere, "OpenGL error " + std::to_string(err));
+}
+
+void PlaneSweepGpu::bind() const {
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_FLUENCE);
+    glBindTexture(GL_TEXTURE_3D, volumes_[0]);
+    glActiveTexture(GL_TEXTURE0 + EK_UNIT_FLUENCE_DIRECTION);
+    glBindTexture(GL_TEXTURE_3D, volumes_[1]);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+int64_t PlaneSweepGpu::texelsLost() const {
+    GLuint lost = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, counters_);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(GLuint), &lost);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    return int64_t(lost);
+}
+
+PlaneSweepResultCpu PlaneSweepGpu::download() const {
+    PlaneSweepResultCpu out;
+    if (!volumes_[0]) return out;
+    out.fluence = downloadVolume(volumes_[0], resolution_);
+    out.direction = downloadVolume(volumes_[1], resolution_);
+    out.texels = texels_;
+    out.texelSteps = texelSteps_;
+    out.texelsLost = texelsLost();
+    out.memory = memory_;
+    return out;
+}
+
+}  // namespace eikon

@@ -1,0 +1,60 @@
+#pragma once
+// The plane sweep on the GPU (shaders/plane_sweep.comp): the CPU twin's loop
+// (plane_sweep_cpu.cpp) with each pass of a plane one dispatch over the plane's texels, the light
+// buffers as 2D images that swap between planes, and the voxel-centre planes added into the
+// output contract's fluence volumes, which stay on the GPU for the view pass.
+//
+// Receivers are not gathered on the GPU yet: a scene with one says so in one line (the CPU twin
+// gathers them; docs/methods.md).
+#include <cstdint>
+#include <memory>
+
+#include "render/transport/plane_sweep/plane_sweep_cpu.h"
+
+namespace eikon {
+
+class GpuStageTimer;
+class RefractionVolumesGpu;
+class ShaderProgram;
+class VolumeTextures;
+
+class PlaneSweepGpu {
+public:
+    // exactMath: the CPU twin's rounding (exact_math.glsl), bit-identical on llvmpipe.
+    explicit PlaneSweepGpu(bool exactMath);
+    ~PlaneSweepGpu();
+    PlaneSweepGpu(const PlaneSweepGpu&) = delete;
+    PlaneSweepGpu& operator=(const PlaneSweepGpu&) = delete;
+
+    // Sweeps every light that comes through the fluence; the fields are uploaded and the
+    // params bound (TransportInputsGpu), `refraction` holds ∇n.
+    void compute(const ViewSetup& setup, VolumeTextures& fields,
+                 const RefractionVolumesGpu& refraction, const PlaneSweepSettings& settings,
+                 GpuStageTimer* timer);
+    // The fluence volumes at the output contract's texture units.
+    void bind() const;
+    // The last run's volumes and counters, read back (tests, --stats); no receiver map.
+    PlaneSweepResultCpu download() const;
+
+    int64_t texels() const { return texels_; }
+    int64_t texelSteps() const { return texelSteps_; }
+    int64_t texelsLost() const;  // reads a counter back
+    const PlaneSweepMemory& memory() const { return memory_; }
+
+private:
+    void allocateVolumes(glm::ivec3 res);
+    void allocatePlanes(glm::ivec2 size);
+    void dispatchPlane(glm::ivec2 size) const;
+
+    std::unique_ptr<ShaderProgram> program_;
+    unsigned volumes_[2] = {0, 0};          // fluence, mean direction
+    unsigned planes_[5] = {0, 0, 0, 0, 0};  // light, direction (twice each), traces
+    unsigned counters_ = 0;
+    glm::ivec3 resolution_{0};
+    glm::ivec2 planeSize_{0};
+    int64_t texels_ = 0;
+    int64_t texelSteps_ = 0;
+    PlaneSweepMemory memory_;
+};
+
+}  // namespace eikon
