@@ -105,7 +105,7 @@ const std::vector<LightTransportMethod>& lightTransportMethods() {
         {"plane_sweep",
          "Magnus's thesis: each light's 2D buffer advances plane by plane, looking back along its "
          "direction, bending by the ∇n step and correcting intensity by footprint areas (curved "
-         "light, caustics, no noise); receivers on the CPU twin only so far",
+         "light, caustics, no noise)",
          [](const json::Value* s, const TransportDevice& d) {
              return make<PlaneSweepTransport>(readPlaneSweepTransportSettings(s), d);
          },

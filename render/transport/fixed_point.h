@@ -2,6 +2,8 @@
 // The fixed-point rule for deposits and totals that particle methods sum as 64-bit integers, so
 // that any order of additions, on any thread count or GPU schedule, gives the same bits
 // (render/transport/photons/photon_tracing.h says why the range is 2^40).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include <glm/vec3.hpp>
@@ -14,6 +16,14 @@ constexpr double kFixedPointRange = 1099511627776.0;  // 2^40
 // The scale for sums of `power` × `length`; 0 where nothing was emitted.
 inline double fixedPointScaleFor(double power, double length) {
     return power > 0.0 ? kFixedPointRange / (power * length) : 0.0;
+}
+
+// value · scale as a fixed-point integer, rounded half away from zero; clamped so that no input
+// can make the conversion undefined (at the documented scale a single deposit never comes near
+// it). shaders/fixed_point.glsl gives the GPU the same integer, bit for bit.
+inline int64_t toFixedPoint(double value, double scale) {
+    const double limit = 4.0e18;
+    return int64_t(std::llround(std::clamp(value * scale, -limit, limit)));
 }
 
 inline double fromFixedPoint(int64_t q, double scale) {

@@ -59,7 +59,10 @@
 #define EK_SSBO_RECEIVER_MAP 8       // view.comp: irradiance per receiver map texel
 #define EK_SSBO_PHOTON_ROUNDS 9      // photon_trace.comp, photon_round.comp: rounds and lists
 #define EK_SSBO_PHOTON_EXTINGUISHED 10  // photon_trace.comp: flux lost so far, per photon
-#define EK_SSBO_SWEEP_COUNTERS 11       // plane_sweep.comp: texels whose light was lost
+// plane_sweep.comp, which never runs beside the photon passes (low numbers: GL 4.3 promises a
+// compute shader only 8 storage blocks).
+#define EK_SSBO_SWEEP_COUNTERS 4       // texels whose light was lost
+#define EK_SSBO_SWEEP_RECEIVER_SUMS 5  // power per receiver map texel
 // The voxelizer's passes (voxelize_*.comp) run apart from the volume passes: binding 0 is theirs
 // until render/params_buffer.cpp binds the parameters again before the next volume pass.
 #define EK_SSBO_VOXELIZE_POSITIONS 0  // voxelize_toggle.comp: vertex positions

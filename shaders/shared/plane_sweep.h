@@ -32,14 +32,15 @@
 // Light is held finite past a focus, where the sweep cannot follow it (sweepAdvance).
 //
 // Receivers (receivers.h) stop light: a texel whose step crosses one has its light taken off the
-// buffer there, and a plane receiver's front face gathers it (sweepReceiverHit says where; the
-// includer deposits the texel's power, so the sums can be made in an order that does not depend
-// on threads).
+// buffer there, and a plane receiver's front face gathers it (sweepStopOnReceivers; the includer
+// sums the power in fixed point, so the order of the additions does not matter).
 //
 // Needs sampling.h, optics.h, receivers.h and ray_equation.h, and from the includer:
 //   vec4 fetchSweepLight(ivec2 texel)      the previous plane's light (rgb)
 //   vec4 fetchSweepDirection(ivec2 texel)  the previous plane's direction (xyz: v; w: 1 if lit)
 //   vec4 fetchSweepTrace(ivec2 texel)      this plane's back-traced points (sweepBackTrace)
+//   void depositSweepReceiver(int mapTexel, vec3 power)  adds power to a receiver map texel
+//                                          (fixed point on both sides: any order, same sums)
 //
 // The GPU runs it in shaders/plane_sweep.comp, a dispatch per pass and plane
 // (render/transport/plane_sweep/plane_sweep_gpu.cpp).
@@ -52,6 +53,9 @@
 // A footprint that shrinks more than fourfold between two planes is at a caustic, where the
 // intensity law's E → ∞: the step is held at fourfold.
 #define EK_SWEEP_MAX_AREA_RATIO 4.0f
+// A footprint covers at most this many map texels along an axis: a receiver has at most 8 texels
+// per voxel edge (core/scene_receivers.cpp), and a voxel wide footprint straddles one more.
+#define EK_SWEEP_MAX_FOOTPRINT_TEXELS 10
 
 // One plane's step of one light's sweep; only ivec4/vec4 members (std430 and C++ agree).
 struct GpuPlaneSweep {
@@ -249,6 +253,55 @@ int sweepReceiverHit(GpuPlaneSweep s, ivec2 t, EK_OUT(vec2) mapCoord, EK_OUT(boo
     beyond = sweepSegmentTransmittance(worldToVolumeIndex(hit),
                                        sweepPoint(s, vec2(t) + vec2(0.5f), s.place.x));
     return r;
+}
+
+// The share of map texel i (covering [i, i + 1)) in a footprint [lo, hi) along one map axis.
+float sweepFootprintShare(float lo, float hi, int i) {
+    return (min(hi, float(i + 1)) - max(lo, float(i))) / (hi - lo);
+}
+
+// Takes texel t's light (the new plane's) off where its step crossed a receiver, and gives what
+// reaches a plane receiver's front face to its map: the texel's power (irradiance on the plane ×
+// the texel's area). On a receiver across the sweep axis (its map's axes are the plane's) the
+// power is spread over the texel's own footprint, a voxel square around where it lands, so
+// uniform light gives a uniform map whatever the map's texels per voxel; on one along the sweep
+// axis it is splatted bilinearly at the landing point. What falls outside the map falls outside
+// the volume's box: it is not gathered.
+void sweepStopOnReceivers(GpuPlaneSweep s, ivec2 t, EK_INOUT(vec4) light) {
+    vec2 coord;
+    bool front;
+    vec3 beyond;
+    const int r = sweepReceiverHit(s, t, coord, front, beyond);
+    if (r < 0) return;
+    const vec3 h = volumeVoxelSize();
+    // The light as it reached the receiver, not as it would have reached the plane.
+    const vec3 power = vec3(light) / max(beyond, vec3(1e-30f)) * (h[s.axes.y] * h[s.axes.z]);
+    light = vec4(0.0f);
+    if (!front) return;
+    const GpuReceiver receiver = params.receivers[r];
+    if (receiverAxis(receiver) != s.axes.x) {
+        ivec4 index;
+        vec4 weight;
+        receiverBilinear(r, coord, index, weight);
+        for (int c = 0; c < 4; ++c) depositSweepReceiver(index[c], power * weight[c]);
+        return;
+    }
+    const int width = receiverMapWidth(receiver);
+    const int height = receiverMapHeight(receiver);
+    const int start = receiverMapStart(receiver);
+    // Half the texel's extent in map texels along the map's u and w.
+    const vec2 halfExtent =
+        vec2(0.5f * float(width) / float(s.plane.z), 0.5f * float(height) / float(s.plane.w));
+    const vec2 lo = coord - halfExtent;
+    const vec2 hi = coord + halfExtent;
+    const ivec2 first = ivec2(floor(lo));
+    const ivec2 last =
+        min(ivec2(ceil(hi)) - ivec2(1), first + ivec2(EK_SWEEP_MAX_FOOTPRINT_TEXELS - 1));
+    for (int w = max(first.y, 0); w <= min(last.y, height - 1); ++w)
+        for (int u = max(first.x, 0); u <= min(last.x, width - 1); ++u)
+            depositSweepReceiver(
+                start + w * width + u,
+                power * (sweepFootprintShare(lo.x, hi.x, u) * sweepFootprintShare(lo.y, hi.y, w)));
 }
 
 // What a texel of a voxel-centre plane adds to that voxel of the output contract's volumes: the

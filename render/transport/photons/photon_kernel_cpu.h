@@ -30,10 +30,7 @@ struct PhotonKernelCpu : VolumeAccessCpu {
     vec4 fetchOctree(ivec3 v) const { return octree[voxelIndex(v)]; }
 
     static int64_t toFixed(double value, double scale) {
-        // Clamped so that no input can make the conversion undefined; at the documented scale a
-        // single deposit never comes near this.
-        const double limit = 4.0e18;
-        return int64_t(std::llround(std::clamp(value * scale, -limit, limit)));
+        return ::eikon::toFixedPoint(value, scale);
     }
 
     void depositVoxel(ivec3 v, vec3 fluxLength, vec3 weightedDir) const {

@@ -1,6 +1,8 @@
 #include "render/transport/plane_sweep/plane_sweep_cpu.h"
 
+#include <atomic>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <tbb/blocked_range.h>
@@ -8,6 +10,7 @@
 
 #include "core/error.h"
 #include "render/receiver_map.h"
+#include "render/transport/fixed_point.h"
 #include "render/volume_kernels_cpu.h"
 
 EK_NAMESPACE_BEGIN
@@ -24,6 +27,15 @@ struct PlaneSweepKernelCpu : VolumeAccessCpu {
     vec4 fetchSweepLight(ivec2 t) const { return sweepLight[texelIndex(t)]; }
     vec4 fetchSweepDirection(ivec2 t) const { return sweepDirection[texelIndex(t)]; }
     vec4 fetchSweepTrace(ivec2 t) const { return sweepTrace[texelIndex(t)]; }
+
+    // Receiver map sums: 3 int64 per map texel (r, g, b), power · receiverScale.
+    std::atomic<int64_t>* receiverSums = nullptr;
+    double receiverScale = 0.0;
+    void depositSweepReceiver(int mapTexel, vec3 power) const {
+        for (int c = 0; c < 3; ++c)
+            receiverSums[size_t(mapTexel) * 3 + size_t(c)].fetch_add(
+                toFixedPoint(power[c], receiverScale), std::memory_order_relaxed);
+    }
 
     // clang-format off
 #include "shaders/shared/plane_sweep.h"
@@ -82,96 +94,6 @@ float irradianceCeiling(const shared::GpuViewParams& p, int l, const PlaneSweepP
     return float(std::min(ceiling, 1e30));
 }
 
-// A footprint covers at most this many map texels along an axis: a receiver has at most 8
-// texels per voxel edge (core/scene_receivers.cpp), and a voxel wide footprint straddles one more.
-constexpr int kMaxFootprintTexels = 10;
-
-// The weights of map texels first, first + 1, ... under a footprint [lo, hi) along one map axis
-// (texel i covers [i, i + 1)): each its share of the overlap. Returns how many.
-int footprintWeights(float lo, float hi, int& first, float* weight) {
-    first = int(std::floor(lo));
-    const int last = int(std::ceil(hi)) - 1;
-    int count = 0;
-    for (int i = first; i <= last && count < kMaxFootprintTexels; ++i)
-        weight[count++] = (std::min(hi, float(i + 1)) - std::max(lo, float(i))) / (hi - lo);
-    return count;
-}
-
-// Takes off the new plane the light of texels whose step crossed a receiver, and adds what
-// reaches a plane receiver's front face to its map: the texel's power (irradiance on the plane ×
-// the texel's area). On a receiver across the sweep axis (its map's axes are the plane's) the
-// power is spread over the texel's own footprint, a voxel square around where it lands, so
-// uniform light gives a uniform map whatever the map's texels per voxel; on one along the sweep
-// axis it is splatted bilinearly at the landing point. Serial, in texel order: the sums are the
-// same whatever the threads did before.
-void stopOnReceivers(const shared::GpuPlaneSweep& sweep, const PlaneSweepPlan& plan,
-                     shared::PlaneSweepKernelCpu& k, std::vector<glm::vec4>& light,
-                     std::vector<glm::dvec3>& flux) {
-    const shared::GpuViewParams& p = k.params;
-    const glm::vec3 h = k.volumeVoxelSize();
-    const double texelArea = double(h[plan.u]) * double(h[plan.w]);
-    for (int b = 0; b < plan.size.y; ++b)
-        for (int a = 0; a < plan.size.x; ++a) {
-            glm::vec2 coord;
-            bool front = false;
-            glm::vec3 beyond;
-            const int r = k.sweepReceiverHit(sweep, glm::ivec2(a, b), coord, front, beyond);
-            if (r < 0) continue;
-            glm::vec4& texel = light[size_t(b) * size_t(plan.size.x) + size_t(a)];
-            // The light as it reached the receiver, not as it would have reached the plane.
-            const glm::dvec3 power =
-                glm::dvec3(glm::vec3(texel) / glm::max(beyond, glm::vec3(1e-30f))) * texelArea;
-            texel = glm::vec4(0.0f);
-            if (!front) continue;
-            const shared::GpuReceiver& receiver = p.receivers[r];
-            const int width = shared::receiverMapWidth(receiver);
-            const int height = shared::receiverMapHeight(receiver);
-            const size_t start = size_t(shared::receiverMapStart(receiver));
-            if (shared::receiverAxis(receiver) != plan.axis) {
-                glm::ivec4 index;
-                glm::vec4 weight;
-                k.receiverBilinear(r, coord, index, weight);
-                for (int c = 0; c < 4; ++c) flux[size_t(index[c])] += power * double(weight[c]);
-                continue;
-            }
-            // Half the texel's extent in map texels along the map's u and w.
-            const glm::vec2 half(0.5f * float(width) / float(plan.size.x),
-                                 0.5f * float(height) / float(plan.size.y));
-            int firstU = 0, firstW = 0;
-            float weightU[kMaxFootprintTexels], weightW[kMaxFootprintTexels];
-            const int countU =
-                footprintWeights(coord.x - half.x, coord.x + half.x, firstU, weightU);
-            const int countW =
-                footprintWeights(coord.y - half.y, coord.y + half.y, firstW, weightW);
-            // What falls outside the map falls outside the volume's box: it is not gathered.
-            for (int jw = 0; jw < countW; ++jw)
-                for (int iu = 0; iu < countU; ++iu) {
-                    const int u = firstU + iu, w = firstW + jw;
-                    if (u < 0 || w < 0 || u >= width || w >= height) continue;
-                    flux[start + size_t(w) * size_t(width) + size_t(u)] +=
-                        power * double(weightU[iu] * weightW[jw]);
-                }
-        }
-}
-
-// Irradiance (power per area) of every receiver map texel from the flux it gathered.
-std::vector<glm::vec4> receiverIrradiance(const ViewSetup& setup,
-                                          const std::vector<glm::dvec3>& flux) {
-    const shared::GpuViewParams& p = setup.params;
-    std::vector<glm::vec4> map(flux.size(), glm::vec4(0.0f));
-    shared::PlaneSweepKernelCpu k{{p}};
-    for (int r = 0; r < shared::receiverCount(p); ++r) {
-        const shared::GpuReceiver& receiver = p.receivers[r];
-        const size_t start = size_t(shared::receiverMapStart(receiver));
-        const size_t texels = size_t(shared::receiverMapWidth(receiver)) *
-                              size_t(shared::receiverMapHeight(receiver));
-        const double area = double(k.receiverTexelArea(r));
-        for (size_t i = start; i < start + texels; ++i)
-            map[i] = glm::vec4(glm::vec3(flux[i] / area), 0.0f);
-    }
-    return map;
-}
-
 }  // namespace
 
 PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int l, const PlaneSweepSettings& s) {
@@ -227,6 +149,38 @@ int planeSweepSlice(const PlaneSweepPlan& plan, int j) {
     return plan.order > 0 ? j / plan.perVoxel : plan.depth - 1 - j / plan.perVoxel;
 }
 
+double planeSweepReceiverScale(const ViewSetup& setup, const PlaneSweepSettings& settings) {
+    const shared::GpuViewParams& p = setup.params;
+    const glm::vec3 h = shared::VolumeAccessCpu{p}.volumeVoxelSize();
+    const double largestTexel = std::max({double(h.x) * h.y, double(h.y) * h.z, double(h.z) * h.x});
+    double bound = 0.0;
+    for (int l = 0; l < shared::lightCount(p); ++l)
+        if (shared::lightInFluence(p, l))
+            bound +=
+                double(irradianceCeiling(p, l, planPlaneSweep(setup, l, settings))) * largestTexel;
+    return fixedPointScaleFor(bound, 1.0);
+}
+
+std::vector<glm::vec4> planeSweepReceiverMap(const ViewSetup& setup, const int64_t* sums,
+                                             double scale) {
+    const shared::GpuViewParams& p = setup.params;
+    std::vector<glm::vec4> map(receiverMapTexels(p), glm::vec4(0.0f));
+    shared::PlaneSweepKernelCpu k{{p}};
+    for (int r = 0; r < shared::receiverCount(p); ++r) {
+        const shared::GpuReceiver& receiver = p.receivers[r];
+        const size_t start = size_t(shared::receiverMapStart(receiver));
+        const size_t texels = size_t(shared::receiverMapWidth(receiver)) *
+                              size_t(shared::receiverMapHeight(receiver));
+        const double area = double(k.receiverTexelArea(r));
+        for (size_t i = start; i < start + texels; ++i) {
+            glm::dvec3 flux;
+            for (int c = 0; c < 3; ++c) flux[c] = fromFixedPoint(sums[3 * i + size_t(c)], scale);
+            map[i] = glm::vec4(glm::vec3(flux / area), 0.0f);
+        }
+    }
+    return map;
+}
+
 PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
                                    const std::vector<const DenseGrid*>& slotGrids,
                                    const RefractionVolumeCpu& gradient,
@@ -243,8 +197,12 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
     shared::PlaneSweepKernelCpu kernel{{p}};
     for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
     kernel.gradient = gradient.data();
-    // Flux gathered by the receivers' map texels, summed in one fixed order.
-    std::vector<glm::dvec3> receiverFlux(receiverMapTexels(p), glm::dvec3(0.0));
+    // Power gathered by the receivers' map texels, in fixed point (any order, the same sums).
+    const size_t receiverSums = 3 * receiverMapTexels(p);
+    std::unique_ptr<std::atomic<int64_t>[]> sums(new std::atomic<int64_t>[receiverSums]);
+    for (size_t i = 0; i < receiverSums; ++i) sums[i].store(0, std::memory_order_relaxed);
+    kernel.receiverSums = sums.get();
+    kernel.receiverScale = planeSweepReceiverScale(setup, settings);
 
     for (int l = 0; l < shared::lightCount(p); ++l) {
         if (!shared::lightInFluence(p, l)) continue;
@@ -276,7 +234,9 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
                 k.sweepAdvance(sweep, t, nextLight[i], nextDirection[i]);
             });
             if (shared::receiverCount(p) > 0)
-                stopOnReceivers(sweep, plan, k, nextLight, receiverFlux);
+                rows([&](glm::ivec2 t, size_t i) {
+                    k.sweepStopOnReceivers(sweep, t, nextLight[i]);
+                });
             light.swap(nextLight);
             direction.swap(nextDirection);
             out.texelSteps += int64_t(texels);
@@ -287,7 +247,9 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
             if (observer) observer(l, plan, slice, light, direction);
         }
     }
-    out.receiverMap = receiverIrradiance(setup, receiverFlux);
+    std::vector<int64_t> gathered(receiverSums);
+    for (size_t i = 0; i < receiverSums; ++i) gathered[i] = sums[i].load();
+    out.receiverMap = planeSweepReceiverMap(setup, gathered.data(), kernel.receiverScale);
     return out;
 }
 

@@ -8,7 +8,8 @@
 // the volume's depth (PlaneSweepMemory reports both).
 //
 // Deterministic: every texel of a plane is computed from the previous plane alone, in any
-// order, with no sums across threads; the same bits for any thread count.
+// order; the receivers' sums are fixed point, so their order does not matter either: the same
+// bits for any thread count, and on the GPU (plane_sweep_gpu.h).
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -58,6 +59,13 @@ shared::GpuPlaneSweep planeSweepStep(const ViewSetup& setup, const PlaneSweepPla
                                      const PlaneSweepSettings& settings, int j);
 // The volume slice plane j lies on (the output contract's), or −1 between voxel centres.
 int planeSweepSlice(const PlaneSweepPlan& plan, int j);
+
+// The fixed-point scale of the receivers' sums (render/transport/fixed_point.h): 2^40 quanta
+// for the most power the lights in the fluence could bring into the volume.
+double planeSweepReceiverScale(const ViewSetup& setup, const PlaneSweepSettings& settings);
+// Irradiance (rgb) per receiver map texel from the sums (3 per texel) of the power it gathered.
+std::vector<glm::vec4> planeSweepReceiverMap(const ViewSetup& setup, const int64_t* sums,
+                                             double scale);
 
 // What a run allocates, in bytes.
 struct PlaneSweepMemory {

@@ -2,10 +2,12 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <string>
 
 #include "core/error.h"
 #include "render/gpu_timer.h"
+#include "render/receiver_map.h"
 #include "render/refraction_volume.h"
 #include "render/shader_program.h"
 #include "render/volume_textures.h"
@@ -19,6 +21,7 @@ constexpr int kPassClear = 0;
 constexpr int kPassTrace = 1;
 constexpr int kPassAdvance = 2;
 constexpr int kPassDeposit = 3;
+constexpr int kPassStop = 4;
 
 constexpr GLuint kGroup = 8;  // plane_sweep.comp's local size along x and y
 
@@ -53,12 +56,16 @@ PlaneSweepGpu::PlaneSweepGpu(bool exactMath) {
     if (exactMath) defines.push_back("EK_EXACT_MATH");
     program_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("plane_sweep.comp", defines));
     glGenBuffers(1, &counters_);
+    glGenBuffers(1, &receiverSums_);
+    glGenBuffers(1, &receiverMapBuffer_);
 }
 
 PlaneSweepGpu::~PlaneSweepGpu() {
     glDeleteTextures(2, volumes_);
     glDeleteTextures(5, planes_);
     glDeleteBuffers(1, &counters_);
+    glDeleteBuffers(1, &receiverSums_);
+    glDeleteBuffers(1, &receiverMapBuffer_);
 }
 
 void PlaneSweepGpu::allocateVolumes(glm::ivec3 res) {
@@ -101,10 +108,6 @@ void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
                             const RefractionVolumesGpu& refraction,
                             const PlaneSweepSettings& settings, GpuStageTimer* timer) {
     const shared::GpuViewParams& p = setup.params;
-    if (shared::receiverCount(p) > 0)
-        throw Error(kWhere,
-                    "gathers light on receivers on the CPU twin only so far: render this scene "
-                    "with --backend cpu");
     const glm::ivec3 res(p.resolution);
     allocateVolumes(res);
     texels_ = 0;
@@ -129,8 +132,19 @@ void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
     glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), &zero, GL_DYNAMIC_READ);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_SWEEP_COUNTERS, counters_);
+    const bool receivers = shared::receiverCount(p) > 0;
+    receiverSumCount_ = 3 * receiverMapTexels(p);
+    receiverScale_ = planeSweepReceiverScale(setup, settings);
+    // Two words per int64 sum, zeroed (at least one word: GL refuses empty buffers).
+    const std::vector<GLuint> zeros(std::max<size_t>(2 * receiverSumCount_, 1), 0u);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, receiverSums_);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(zeros.size() * sizeof(GLuint)), zeros.data(),
+                 GL_DYNAMIC_READ);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_SWEEP_RECEIVER_SUMS, receiverSums_);
 
     program_->use();
+    glUniform1d(program_->uniformLocation("receiverScale"), receiverScale_);
     program_->setInt("sweepPass", kPassClear);
     glDispatchCompute(groups(res.x), groups(res.y), GLuint(res.z));
     barrier();
@@ -158,6 +172,10 @@ void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
             dispatchPlane(plan.size);
             program_->setInt("sweepPass", kPassAdvance);
             dispatchPlane(plan.size);
+            if (receivers) {
+                program_->setInt("sweepPass", kPassStop);
+                dispatchPlane(plan.size);
+            }
             in = 1 - in;
             texelSteps_ += int64_t(texels);
             const int slice = planeSweepSlice(plan, j);
@@ -172,8 +190,30 @@ void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
     if (timer) timer->end();
+    // The map is read back and converted by the twin's own code (a few hundred KB once per run),
+    // then uploaded for the view pass.
+    receiverMap_ = planeSweepReceiverMap(setup, downloadReceiverSums().data(), receiverScale_);
+    const glm::vec4 none(0.0f);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, receiverMapBuffer_);
+    glBufferData(GL_SHADER_STORAGE_BUFFER,
+                 GLsizeiptr(std::max<size_t>(receiverMap_.size(), 1) * sizeof(glm::vec4)),
+                 receiverMap_.empty() ? &none : receiverMap_.data(), GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
         throw Error(kWhere, "OpenGL error " + std::to_string(err));
+}
+
+std::vector<int64_t> PlaneSweepGpu::downloadReceiverSums() const {
+    std::vector<GLuint> words(2 * receiverSumCount_);
+    std::vector<int64_t> sums(receiverSumCount_);
+    if (sums.empty()) return sums;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, receiverSums_);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(words.size() * sizeof(GLuint)),
+                       words.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    for (size_t i = 0; i < sums.size(); ++i)
+        sums[i] = int64_t((uint64_t(words[2 * i + 1]) << 32) | uint64_t(words[2 * i]));
+    return sums;
 }
 
 void PlaneSweepGpu::bind() const {
@@ -182,6 +222,7 @@ void PlaneSweepGpu::bind() const {
     glActiveTexture(GL_TEXTURE0 + EK_UNIT_FLUENCE_DIRECTION);
     glBindTexture(GL_TEXTURE_3D, volumes_[1]);
     glActiveTexture(GL_TEXTURE0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_MAP, receiverMapBuffer_);
 }
 
 int64_t PlaneSweepGpu::texelsLost() const {
@@ -200,6 +241,7 @@ PlaneSweepResultCpu PlaneSweepGpu::download() const {
     out.texels = texels_;
     out.texelSteps = texelSteps_;
     out.texelsLost = texelsLost();
+    out.receiverMap = receiverMap_;
     out.memory = memory_;
     return out;
 }

@@ -3,11 +3,11 @@
 // (plane_sweep_cpu.cpp) with each pass of a plane one dispatch over the plane's texels, the light
 // buffers as 2D images that swap between planes, and the voxel-centre planes added into the
 // output contract's fluence volumes, which stay on the GPU for the view pass.
-//
-// Receivers are not gathered on the GPU yet: a scene with one says so in one line (the CPU twin
-// gathers them; docs/methods.md).
+// Receivers are gathered in fixed point (shaders/fixed_point.glsl) at the twin's scale; their map
+// is read back, converted by the twin's code and uploaded for the view pass.
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "render/transport/plane_sweep/plane_sweep_cpu.h"
 
@@ -33,7 +33,7 @@ public:
                  GpuStageTimer* timer);
     // The fluence volumes at the output contract's texture units.
     void bind() const;
-    // The last run's volumes and counters, read back (tests, --stats); no receiver map.
+    // The last run's volumes, receiver map and counters, read back (tests, --stats).
     PlaneSweepResultCpu download() const;
 
     int64_t texels() const { return texels_; }
@@ -45,11 +45,17 @@ private:
     void allocateVolumes(glm::ivec3 res);
     void allocatePlanes(glm::ivec2 size);
     void dispatchPlane(glm::ivec2 size) const;
+    std::vector<int64_t> downloadReceiverSums() const;
 
     std::unique_ptr<ShaderProgram> program_;
     unsigned volumes_[2] = {0, 0};          // fluence, mean direction
     unsigned planes_[5] = {0, 0, 0, 0, 0};  // light, direction (twice each), traces
     unsigned counters_ = 0;
+    unsigned receiverSums_ = 0;       // 3 int64 (word pairs) per receiver map texel
+    unsigned receiverMapBuffer_ = 0;  // the irradiance map the view pass reads
+    size_t receiverSumCount_ = 0;
+    double receiverScale_ = 0.0;
+    std::vector<glm::vec4> receiverMap_;
     glm::ivec3 resolution_{0};
     glm::ivec2 planeSize_{0};
     int64_t texels_ = 0;

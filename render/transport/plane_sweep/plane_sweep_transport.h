@@ -10,8 +10,7 @@
 // advance with the planes in 2D buffers (no volume at all) come next (docs/methods.md).
 //
 // Settings: render.light_transport.plane_sweep (docs/scene-format.md).
-// On the GPU (plane_sweep_gpu.h) without receivers so far: a GPU run of a scene with one says so
-// in one line.
+// Runs on the CPU twin or on the GPU (plane_sweep_gpu.h), with the same results.
 #include <memory>
 #include <string>
 
