@@ -81,7 +81,6 @@ public:
 
 private:
     void allocate(glm::ivec3 resolution);
-    void uploadReceiverMap(const std::vector<glm::vec4>& map);
 
     std::unique_ptr<PhotonTracerGpu> tracer_;
     std::unique_ptr<VolumeSmootherGpu> smoother_;

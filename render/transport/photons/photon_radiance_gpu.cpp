@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "render/gpu_timer.h"
+#include "render/gpu_transfer.h"
 #include "render/shader_program.h"
 #include "render/smoothing.h"
 #include "render/transport/photons/photon_radiance.h"
@@ -12,19 +13,6 @@
 #include "shaders/shared/bindings.h"
 
 namespace eikon {
-
-namespace {
-
-std::vector<glm::vec4> downloadVolume(unsigned texture, glm::ivec3 res) {
-    std::vector<glm::vec4> out(size_t(res.x) * size_t(res.y) * size_t(res.z));
-    glBindTexture(GL_TEXTURE_3D, texture);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, out.data());
-    glBindTexture(GL_TEXTURE_3D, 0);
-    return out;
-}
-
-}  // namespace
 
 PhotonRadianceGpu::PhotonRadianceGpu(bool exactMath)
     : tracer_(std::make_unique<PhotonTracerGpu>(exactMath)),
@@ -85,7 +73,9 @@ void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
     smoother_->smooth(raw_[0], smoothed_[0], res);
     smoother_->smooth(raw_[1], smoothed_[1], res);
     if (timer) timer->end();
-    uploadReceiverMap(tracer_->receiverMap());
+    // The map is read back and converted on the host by the twin's own code (a few hundred KB,
+    // once per photon trace), then uploaded for the view pass.
+    uploadVec4Buffer(receiverMap_, tracer_->receiverMap());
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
         throw Error("photon radiance", "OpenGL error " + std::to_string(err));
 }
@@ -97,17 +87,6 @@ void PhotonRadianceGpu::bind() const {
     glBindTexture(GL_TEXTURE_3D, smoothed_[1]);
     glActiveTexture(GL_TEXTURE0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_MAP, receiverMap_);
-}
-
-// The map is read back and converted on the host by the twin's own code (a few hundred KB, once
-// per photon trace), then uploaded for the view pass.
-void PhotonRadianceGpu::uploadReceiverMap(const std::vector<glm::vec4>& map) {
-    if (!receiverMap_) glGenBuffers(1, &receiverMap_);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, receiverMap_);
-    const glm::vec4 none(0.0f);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<size_t>(map.size(), 1) * 16),
-                 map.empty() ? &none : map.data(), GL_DYNAMIC_DRAW);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 
 int64_t PhotonRadianceGpu::lastPhotonsTraced() const {
@@ -129,8 +108,8 @@ int64_t PhotonRadianceGpu::lastSteps() const {
 PhotonVolumes PhotonRadianceGpu::download() const {
     const PhotonResultCpu traced = tracer_->download();
     PhotonVolumes out;
-    out.radiance = downloadVolume(smoothed_[0], resolution_);
-    out.direction = downloadVolume(smoothed_[1], resolution_);
+    out.radiance = downloadRgbaVolume(smoothed_[0], resolution_);
+    out.direction = downloadRgbaVolume(smoothed_[1], resolution_);
     out.totals = traced.totals;
     out.receiverMap = traced.receiverMap;
     out.steps = traced.steps;

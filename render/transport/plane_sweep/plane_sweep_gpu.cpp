@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "render/gpu_timer.h"
+#include "render/gpu_transfer.h"
 #include "render/receiver_map.h"
 #include "render/refraction_volume.h"
 #include "render/shader_program.h"
@@ -38,15 +39,6 @@ void barrier() {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
-std::vector<glm::vec4> downloadVolume(GLuint texture, glm::ivec3 res) {
-    std::vector<glm::vec4> out(size_t(res.x) * size_t(res.y) * size_t(res.z));
-    glBindTexture(GL_TEXTURE_3D, texture);
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_FLOAT, out.data());
-    glBindTexture(GL_TEXTURE_3D, 0);
-    return out;
-}
-
 const char* const kWhere = "render.light_transport.method \"plane_sweep\"";
 
 }  // namespace
@@ -57,7 +49,6 @@ PlaneSweepGpu::PlaneSweepGpu(bool exactMath) {
     program_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("plane_sweep.comp", defines));
     glGenBuffers(1, &counters_);
     glGenBuffers(1, &receiverSums_);
-    glGenBuffers(1, &receiverMapBuffer_);
 }
 
 PlaneSweepGpu::~PlaneSweepGpu() {
@@ -193,12 +184,7 @@ void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
     // The map is read back and converted by the twin's own code (a few hundred KB once per run),
     // then uploaded for the view pass.
     receiverMap_ = planeSweepReceiverMap(setup, downloadReceiverSums().data(), receiverScale_);
-    const glm::vec4 none(0.0f);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, receiverMapBuffer_);
-    glBufferData(GL_SHADER_STORAGE_BUFFER,
-                 GLsizeiptr(std::max<size_t>(receiverMap_.size(), 1) * sizeof(glm::vec4)),
-                 receiverMap_.empty() ? &none : receiverMap_.data(), GL_DYNAMIC_DRAW);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    uploadVec4Buffer(receiverMapBuffer_, receiverMap_);
     if (const GLenum err = glGetError(); err != GL_NO_ERROR)
         throw Error(kWhere, "OpenGL error " + std::to_string(err));
 }
@@ -236,8 +222,8 @@ int64_t PlaneSweepGpu::texelsLost() const {
 PlaneSweepResultCpu PlaneSweepGpu::download() const {
     PlaneSweepResultCpu out;
     if (!volumes_[0]) return out;
-    out.fluence = downloadVolume(volumes_[0], resolution_);
-    out.direction = downloadVolume(volumes_[1], resolution_);
+    out.fluence = downloadRgbaVolume(volumes_[0], resolution_);
+    out.direction = downloadRgbaVolume(volumes_[1], resolution_);
     out.texels = texels_;
     out.texelSteps = texelSteps_;
     out.texelsLost = texelsLost();
