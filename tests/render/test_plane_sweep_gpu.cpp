@@ -46,8 +46,10 @@ PhotonScene& allThroughFluence(PhotonScene& s) {
     return s;
 }
 
+// Empty vectors (no receivers) are equal; memcmp may not see their null data().
 bool sameBits(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
 }
 
 // The largest difference between two volumes relative to the largest value of the first.
