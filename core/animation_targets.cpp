@@ -223,7 +223,7 @@ void moveShape(SimShapeSpec& shape, glm::vec3 center) {
 const char* animationTargetExamples() {
     return "/lights/0/position, /lights/0/intensity, /meshes/0/rotation, /meshes/0/translate, "
            "/meshes/0/deformer/handles/0/translate, /materials/0/absorption, /camera/position, "
-           "/camera/look_at, /simulation/sources/0/center";
+           "/camera/look_at, /clip_planes/0/point, /simulation/sources/0/center";
 }
 
 std::optional<AnimationTarget> resolveAnimationTarget(const Scene& scene,
@@ -252,6 +252,13 @@ std::optional<AnimationTarget> resolveAnimationTarget(const Scene& scene,
     if (!p.empty() && p[0] == "lights") {
         const int i = indexed(scene.lights.size(), "lights");
         return i < 0 ? std::nullopt : lightTarget(scene, i, p[2], why);
+    }
+    if (!p.empty() && p[0] == "clip_planes") {
+        const int i = indexed(scene.clipPlanes.size(), "clip_planes");
+        if (i >= 0 && p[2] == "point") return make(TargetKind::ClipPoint, i, 3);
+        if (i >= 0 && p[2] == "normal") return make(TargetKind::ClipNormal, i, 3);
+        if (i >= 0) why = "a clip plane animates point or normal, not '" + p[2] + "'";
+        return std::nullopt;
     }
     if (!p.empty() && p[0] == "materials") {
         // Indices of the scene's own materials, as written (the meshes' come after them).
@@ -328,6 +335,12 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
             break;
         case TargetKind::LightSoftness:
             scene.lights[i].coneSoftnessDeg = std::min(v[0], scene.lights[i].coneAngleDeg);
+            break;
+        case TargetKind::ClipPoint:
+            scene.clipPlanes[i].point = v3;
+            break;
+        case TargetKind::ClipNormal:  // a key of zero keeps the last normal, as lights do
+            if (glm::length(v3) > 0.0f) scene.clipPlanes[i].normal = glm::normalize(v3);
             break;
         case TargetKind::CameraPosition:
             scene.camera.position = v3;

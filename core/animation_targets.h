@@ -23,6 +23,8 @@ enum class TargetKind {
     LightIntensity,
     LightCone,
     LightSoftness,
+    ClipPoint,
+    ClipNormal,
     CameraPosition,
     CameraLookAt,
     CameraFov,
@@ -40,8 +42,8 @@ enum class TargetKind {
 
 struct AnimationTarget {
     TargetKind kind = TargetKind::LightIntensity;
-    // mesh, light, material (in Scene::materials) or smoke source (in simulations[domain].sources)
-    // index
+    // mesh, light, clip plane, material (in Scene::materials) or smoke source (in
+    // simulations[domain].sources) index
     int index = 0;
     int handle = 0;  // HandleTranslate, HandleRotation: the handle's index in the deformer
     int domain = 0;  // Source*: the smoke domain's index in Scene::simulations

@@ -20,6 +20,7 @@
 #include "core/json_reader.h"
 #include "core/procedural.h"
 #include "core/scene_animation.h"
+#include "core/scene_clip_planes.h"
 #include "core/scene_dispersion.h"
 #include "core/scene_helpers.h"
 #include "core/scene_memory.h"
@@ -722,6 +723,8 @@ Scene readScene(const Value& root, const std::string& file) {
     if (hasMeshes) addMeshMaterials(*meshes, std::move(parsedMeshes), scene);
     if (auto lights = object.optional("lights")) scene.lights = readLights(*lights);
     if (auto receivers = object.optional("receivers")) scene.receivers = readReceivers(*receivers);
+    // After the meshes' materials: a plane may cut those too.
+    if (auto clip = object.optional("clip_planes")) scene.clipPlanes = readClipPlanes(*clip, scene);
     if (auto camera = object.optional("camera")) scene.camera = readCamera(*camera);
     if (auto environment = object.optional("environment")) {
         scene.environment = readEnvironment(*environment, sceneDirectory);

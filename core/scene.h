@@ -323,6 +323,19 @@ struct ReceiverSpec {
     std::string jsonPath;    // e.g. "/receivers/0", for messages raised after parsing
 };
 
+// A clipping plane (Magnus's thesis, Fig. 6.6): it cuts the opacity of materials on one side of
+// it and keeps their refraction, so the inside of a scan shows through the part cut away, bent by
+// it. The plane goes through `point`; the side `normal` points to stays. On the other side the
+// listed materials (all when `materials` is empty) absorb, scatter and emit nothing, while their
+// n, its gradient and their Fresnel surfaces stay as they were (shaders/shared/optics.h
+// materialClipWeight: a ramp one voxel wide across the plane, so the cut is not a staircase).
+struct ClipPlaneSpec {
+    glm::vec3 point{0.0f};
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};  // unit length; points into the part that stays
+    std::vector<std::string> materials;  // names in Scene::materials; empty: every material
+    std::string jsonPath;                // e.g. "/clip_planes/0"
+};
+
 // The curve between exposure and the sRGB encoding of PNG output and the viewer
 // (shaders/shared/tone_map.h). EXR output stays linear.
 enum class ToneCurve { Linear, Filmic };
@@ -390,6 +403,7 @@ struct Scene {
     std::vector<MeshObjectSpec> meshes;
     std::vector<LightSpec> lights;
     std::vector<ReceiverSpec> receivers;
+    std::vector<ClipPlaneSpec> clipPlanes;
     CameraSpec camera;
     EnvironmentSpec environment;
     RenderSettings render;

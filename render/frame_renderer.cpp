@@ -99,7 +99,8 @@ std::vector<unsigned char> gradientInputs(const ViewSetup& setup,
 }
 
 // The octree's: the ∇n volume's inputs, the octree settings, and, where extinction limits its
-// steps, the materials' extinction (the field versions are in the ∇n inputs already).
+// steps, the materials' extinction and what clips it (the field versions are in the ∇n inputs
+// already).
 std::vector<unsigned char> octreeInputs(const ViewSetup& setup,
                                         const std::vector<unsigned char>& gradientKey,
                                         const OctreeSettings& settings) {
@@ -109,7 +110,10 @@ std::vector<unsigned char> octreeInputs(const ViewSetup& setup,
         for (int m = 0; m < shared::materialCount(setup.params); ++m) {
             appendBytes(key, &setup.params.materials[m].absorption, sizeof(glm::vec4));
             appendBytes(key, &setup.params.materials[m].scattering, sizeof(glm::vec4));
+            appendBytes(key, &setup.params.materials[m].slot, sizeof(glm::ivec4));  // clip masks
         }
+    if (settings.kappaTolerance > 0.0f)
+        appendBytes(key, setup.params.clipPlanes, sizeof(setup.params.clipPlanes));
     return key;
 }
 

@@ -26,7 +26,9 @@ struct OctreeKernelCpu {
         return gradient[(size_t(v.z) * size_t(res.y) + size_t(v.y)) * size_t(res.x) + size_t(v.x)]
             .w;
     }
-    float fetchKappa(ivec3 v) const { return fields ? fields->voxelExtinctionMax(v) : 0.0f; }
+    glm::vec2 fetchKappaRange(ivec3 v) const {
+        return fields ? fields->voxelExtinctionRange(v) : glm::vec2(0.0f);
+    }
 
 #define EK_OCTREE_LEAF_RANGE
 #include "shaders/shared/octree.h"

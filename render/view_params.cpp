@@ -91,6 +91,33 @@ void packReceivers(const Scene& scene, const RenderVolume& volume, shared::GpuVi
     shared::setReceiverCount(p, int(scene.receivers.size()));
 }
 
+// The clip planes as index-space ramps (GpuViewParams::clipPlanes): with h the voxel's extent
+// along the unit normal n, Σ|n_i| voxel_i, the ramp at index position q (world x = min + q∘voxel)
+// is d(x)/h + 1/2 with d the signed distance n·(x − point), so its coefficients are n∘voxel/h and
+// n·(min − point)/h + 1/2. Computed in double: the offset subtracts world coordinates.
+void packClipPlanes(const Scene& scene, const RenderVolume& volume, shared::GpuViewParams& p) {
+    const glm::dvec3 voxel(volume.voxelSize());
+    const glm::dvec3 lo(volume.bounds.min);
+    for (size_t k = 0; k < scene.clipPlanes.size(); ++k) {
+        const ClipPlaneSpec& c = scene.clipPlanes[k];
+        const glm::dvec3 n(c.normal);
+        const double h =
+            std::abs(n.x) * voxel.x + std::abs(n.y) * voxel.y + std::abs(n.z) * voxel.z;
+        p.clipPlanes[k] = glm::vec4(glm::vec3(n * voxel / h),
+                                    float(glm::dot(n, lo - glm::dvec3(c.point)) / h + 0.5));
+    }
+}
+
+// Bit k set: clip plane k cuts material `name` (a plane without a list cuts every material).
+int clipMask(const Scene& scene, const std::string& name) {
+    int mask = 0;
+    for (size_t k = 0; k < scene.clipPlanes.size(); ++k) {
+        const std::vector<std::string>& list = scene.clipPlanes[k].materials;
+        if (list.empty() || std::find(list.begin(), list.end(), name) != list.end()) mask |= 1 << k;
+    }
+    return mask;
+}
+
 }  // namespace
 
 ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const CameraFrame& camera,
@@ -98,6 +125,9 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     if (scene.materials.size() > EK_MAX_MATERIALS)
         throw Error(scene.path + ":/materials",
                     "at most " + std::to_string(EK_MAX_MATERIALS) + " materials are supported");
+    if (scene.clipPlanes.size() > EK_MAX_CLIP_PLANES)
+        throw Error(scene.path + ":/clip_planes",
+                    "at most " + std::to_string(EK_MAX_CLIP_PLANES) + " clip planes are supported");
     if (scene.lights.size() > EK_MAX_LIGHTS)
         throw Error(scene.path + ":/lights",
                     "at most " + std::to_string(EK_MAX_LIGHTS) + " lights are supported");
@@ -140,7 +170,8 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
         g.emission = v4(mat.emission, mat.indexSlope());
         // y: a sharp surface, only where the material refracts at all (fresnel.h).
         g.slot = glm::ivec4(int(slot - setup.slotFields.begin()),
-                            mat.fresnel && mat.indexSlope() != 0.0f ? 1 : 0, 0, 0);
+                            mat.fresnel && mat.indexSlope() != 0.0f ? 1 : 0,
+                            clipMask(scene, mat.name), 0);
     }
     for (size_t l = 0; l < scene.lights.size(); ++l) p.lights[l] = packLight(scene.lights[l]);
     // n ≡ 1 everywhere takes straight rays and needs no ∇n volume.
@@ -149,6 +180,7 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     p.pipeline = glm::ivec4(0);
     shared::setCurvedRays(p, refracts ? static_cast<int>(scene.render.integrator) : -1);
     packReceivers(scene, volume, p);
+    packClipPlanes(scene, volume, p);
     bool disperses = false;
     for (const MaterialSpec& mat : scene.materials) disperses = disperses || mat.abbe > 0.0f;
     if (refracts && disperses) {

@@ -48,6 +48,7 @@ size=48x36
 # or smoke move are taken a few frames in, so that their simulations and tracks are exercised.
 frame_of() {
     case "$1" in
+        ct_tooth_cut) echo 12 ;;
         glass_blob_poked) echo 6 ;;
         glass_squeezed) echo 6 ;;
         light_circling_glass) echo 6 ;;

@@ -4,7 +4,7 @@
 // with a storage barrier between them.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-// The params SSBO and the field textures, for κ at voxel centres (optics.h voxelExtinctionMax).
+// The params SSBO and the field textures, for κ at voxel centres (optics.h voxelExtinctionRange).
 #include "volume_bindings.glsl"
 
 layout(std430, binding = EK_SSBO_OCTREE_PYRAMID) buffer PyramidBlock { vec4 pyramid[]; };
@@ -14,7 +14,7 @@ uniform int level;
 
 vec4 fetchPyramid(int index) { return pyramid[index]; }
 float fetchIndex(ivec3 voxel) { return imageLoad(gradientVolume, voxel).w; }
-float fetchKappa(ivec3 voxel) { return voxelExtinctionMax(voxel); }
+vec2 fetchKappaRange(ivec3 voxel) { return voxelExtinctionRange(voxel); }
 
 #define EK_OCTREE_LEAF_RANGE
 #include "shared/octree.h"

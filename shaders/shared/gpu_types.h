@@ -10,6 +10,7 @@ EK_NAMESPACE_BEGIN
 #define EK_MAX_MATERIALS 4
 #define EK_MAX_LIGHTS 4
 #define EK_MAX_RECEIVERS 4
+#define EK_MAX_CLIP_PLANES 4
 
 #define EK_LIGHT_POINT 0
 #define EK_LIGHT_DIRECTIONAL 1
@@ -47,7 +48,9 @@ struct GpuMaterial {
     // rgb: radiance per scene unit; w: n − 1 per unit of the field, ior − 1 (materialIndexSlope)
     vec4 emission;
     // x: which field texture the material reads (materialSlot); y: 1 where the edge of its field
-    // is a sharp surface that reflects part of the light crossing it (materialFresnel); zw: unused
+    // is a sharp surface that reflects part of the light crossing it (materialFresnel); z: bit k
+    // set = clip plane k cuts its opacity (materialClipMask, optics.h materialClipWeight); w:
+    // unused
     ivec4 slot;
 };
 
@@ -102,6 +105,10 @@ struct GpuViewParams {
     vec4 environmentSky;
     vec4 environmentHorizon;  // gradient: rgb horizon
     vec4 environmentGround;   // gradient: rgb ground
+    // Clip planes (core/scene.h ClipPlaneSpec) in volume index coordinates: the weight a clipped
+    // material's opacity keeps at index position p is clamp(dot(xyz, p) + w, 0, 1), a ramp from 0
+    // to 1 across one voxel's extent along the normal, centred on the plane (optics.h).
+    vec4 clipPlanes[EK_MAX_CLIP_PLANES];
     GpuMaterial materials[EK_MAX_MATERIALS];
     GpuLight lights[EK_MAX_LIGHTS];
     GpuReceiver receivers[EK_MAX_RECEIVERS];
@@ -229,6 +236,9 @@ inline int materialSlot(const GpuMaterial& m) {
 inline bool materialFresnel(const GpuMaterial& m) {
     return m.slot.y != 0;  // its edge reflects by Fresnel's law (shaders/shared/fresnel.h)
 }
+inline int materialClipMask(const GpuMaterial& m) {
+    return m.slot.z;  // bit k: clip plane k cuts its opacity
+}
 inline int lightType(const GpuLight& l) {
     return int(l.position.w);  // EK_LIGHT_*
 }
@@ -265,6 +275,7 @@ inline int receiverMapStart(const GpuReceiver& r) {
 #define materialIndexSlope(m) ((m).emission.w)
 #define materialSlot(m) ((m).slot.x)
 #define materialFresnel(m) ((m).slot.y != 0)
+#define materialClipMask(m) ((m).slot.z)
 #define lightType(l) (int((l).position.w))
 #define lightVersineOuter(l) ((l).direction.w)
 #define lightVersineInner(l) ((l).radiance.w)

@@ -62,7 +62,8 @@ int pyramidNodeIndex(ivec3 res, int level, ivec3 node) {
 
 #ifdef EK_OCTREE_LEAF_RANGE
 // Level 0 (with EK_OCTREE_LEAF_RANGE; needs `float fetchIndex(ivec3 voxel)`, n at a voxel
-// centre, and `float fetchKappa(ivec3 voxel)`, the extinction's largest channel there):
+// centre, and `vec2 fetchKappaRange(ivec3 voxel)`, bounds on the extinction's largest channel
+// within a voxel of that centre, optics.h voxelExtinctionRange):
 // (n_min, n_max) over the voxels within two of `voxel` along every axis, clamped at the faces. A
 // march inside a voxel samples ∇n trilinearly from centres up to one voxel away, and each of
 // those is a central difference reaching one voxel further: n up to two voxels away bends a path
@@ -80,9 +81,9 @@ vec4 pyramidLeafRange(ivec3 res, ivec3 voxel) {
                 range.x = min(range.x, n);
                 range.y = max(range.y, n);
                 if (abs(dx) <= 1 && abs(dy) <= 1 && abs(dz) <= 1) {
-                    const float kappa = fetchKappa(v);
-                    range.z = min(range.z, kappa);
-                    range.w = max(range.w, kappa);
+                    const vec2 kappa = fetchKappaRange(v);
+                    range.z = min(range.z, kappa.x);
+                    range.w = max(range.w, kappa.y);
                 }
             }
     return range;

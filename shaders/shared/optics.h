@@ -31,24 +31,63 @@ vec2 intersectVolume(vec3 origin, vec3 dir) {
     return vec2(max(max(tmin.x, tmin.y), max(tmin.z, 0.0f)), min(min(tmax.x, tmax.y), tmax.z));
 }
 
+// How much of a clipped material's opacity stays at volume index position `indexPos`: the product,
+// over the clip planes set in `mask` (materialClipMask), of each plane's ramp, 1 on the side that
+// stays and 0 past the plane, linear across one voxel's extent along the normal (centred on the
+// plane: along a ray through it the ramp takes away exactly what a sharp cut would). `reach`
+// shifts every ramp by that many of those extents: ±1 bounds the weight anywhere within a voxel of
+// `indexPos` along every axis (voxelExtinctionRange). Only opacity reads it: n, ∇n and the
+// Fresnel surfaces read the field uncut, so what is cut away still refracts.
+float clipWeight(int mask, vec3 indexPos, float reach) {
+    float weight = 1.0f;
+    for (int k = 0; k < EK_MAX_CLIP_PLANES; ++k) {
+        if ((mask & (1 << k)) == 0) continue;
+        const vec4 plane = params.clipPlanes[k];
+        weight *= clamp(dot(vec3(plane), indexPos) + plane.w + reach, 0.0f, 1.0f);
+    }
+    return weight;
+}
+
+// Material m's field at `indexPos` as its opacity sees it: cut by its clip planes.
+float opacityField(int m, vec3 indexPos) {
+    const float f = sampleField(materialSlot(params.materials[m]), indexPos);
+    const int mask = materialClipMask(params.materials[m]);
+    return mask == 0 ? f : f * clipWeight(mask, indexPos, 0.0f);
+}
+
 vec3 extinctionAt(vec3 indexPos) {
     vec3 kappa = vec3(0.0f);
     for (int m = 0; m < materialCount(params); ++m) {
-        const float f = sampleField(materialSlot(params.materials[m]), indexPos);
+        const float f = opacityField(m, indexPos);
         kappa += f * (vec3(params.materials[m].absorption) + vec3(params.materials[m].scattering));
     }
     return kappa;
 }
 
 // The largest channel of the extinction at the centre of `voxel` (the octree's κ ranges,
-// octree.h), by the sum extinctionAt takes.
-float voxelExtinctionMax(ivec3 voxel) {
-    vec3 kappa = vec3(0.0f);
+// octree.h), by the sum extinctionAt takes: x with each clipped material's weight at its lowest
+// within a voxel of the centre, y at its highest. Without clip planes both are the value at the
+// centre. With them, κ between voxel centres is no longer the trilinear blend of κ at the centres
+// (the weight is a function of position, not of the field), so the range over a voxel's
+// neighbours would miss the κ a sample between them sees; the two bounds do not: a sample's
+// trilinear corners all lie within a voxel of it.
+vec2 voxelExtinctionRange(ivec3 voxel) {
+    vec3 lo = vec3(0.0f);
+    vec3 hi = vec3(0.0f);
+    const vec3 centre = vec3(voxel) + vec3(0.5f);
     for (int m = 0; m < materialCount(params); ++m) {
         const float f = fetchVolume(materialSlot(params.materials[m]), voxel).x;
-        kappa += f * (vec3(params.materials[m].absorption) + vec3(params.materials[m].scattering));
+        const vec3 c = vec3(params.materials[m].absorption) + vec3(params.materials[m].scattering);
+        const int mask = materialClipMask(params.materials[m]);
+        if (mask == 0) {
+            lo += f * c;
+            hi += f * c;
+        } else {
+            lo += (f * clipWeight(mask, centre, -1.0f)) * c;
+            hi += (f * clipWeight(mask, centre, 1.0f)) * c;
+        }
     }
-    return max(kappa.x, max(kappa.y, kappa.z));
+    return vec2(max(lo.x, max(lo.y, lo.z)), max(hi.x, max(hi.y, hi.z)));
 }
 
 // How far a shadow step's Simpson and trapezoid sums of κ may differ (optical depth) before the

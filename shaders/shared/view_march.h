@@ -98,7 +98,7 @@ EK_FORCE_INLINE bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(
     vec3 sigma[EK_MAX_MATERIALS];
     bool scatters = false;
     for (int m = 0; m < materialCount(params); ++m) {
-        const float field = sampleField(materialSlot(params.materials[m]), p);
+        const float field = opacityField(m, p);  // clip planes cut it (optics.h)
         sigma[m] = field * vec3(params.materials[m].scattering);
         kappa += field * vec3(params.materials[m].absorption) + sigma[m];
         source += field * vec3(params.materials[m].emission);

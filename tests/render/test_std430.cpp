@@ -118,6 +118,8 @@ Layout viewParamsLayout() {
         EK_MEMBER(GpuViewParams, background),         EK_MEMBER(GpuViewParams, pipeline),
         EK_MEMBER(GpuViewParams, environment),        EK_MEMBER(GpuViewParams, environmentSky),
         EK_MEMBER(GpuViewParams, environmentHorizon), EK_MEMBER(GpuViewParams, environmentGround)};
+    // An array of a basic type is one variable, named by its first element.
+    fields["clipPlanes[0]"] = {offsetof(GpuViewParams, clipPlanes), GL_FLOAT_VEC4};
     addArray(fields, "materials", offsetof(GpuViewParams, materials), sizeof(GpuMaterial),
              EK_MAX_MATERIALS, materialLayout());
     addArray(fields, "lights", offsetof(GpuViewParams, lights), sizeof(GpuLight), EK_MAX_LIGHTS,

@@ -19,26 +19,16 @@ using eikon::test::backendName;
 using eikon::test::boxSource;
 using eikon::test::cameraAt;
 using eikon::test::material;
-using eikon::test::setVolume;
 
 namespace {
 
-// Boxes of field "density" in a white environment, seen straight through along −z by one pixel:
-// what arrives is the environment times the transmittance exp(−∫κ).
+// Boxes of field "density" seen along −z by one pixel: the environment times exp(−∫κ).
 Scene slabScene() {
-    Scene s;
-    setVolume(s, glm::vec3(-1.0f), glm::vec3(1.0f), glm::ivec3(16));
-    s.camera = cameraAt(glm::vec3(0.0f, 0.0f, 5.0f), glm::vec3(0.0f), 10.0f);
-    s.environment.color = glm::vec3(1.0f);
-    s.render.width = 1;
-    s.render.height = 1;
-    return s;
+    return eikon::test::transmittanceProbe();
 }
 
 glm::vec3 pixel(const Scene& scene, Backend backend) {
-    FrameRenderer renderer(scene, backend);
-    const Image image = renderer.render(0);
-    return glm::vec3(image.pixels[0]);
+    return eikon::test::firstPixel(scene, backend);
 }
 
 }  // namespace

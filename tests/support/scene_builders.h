@@ -77,6 +77,18 @@ inline void setVolume(Scene& scene, glm::vec3 lo, glm::vec3 hi, glm::ivec3 resol
     scene.volume.resolution = resolution;
 }
 
+// The volume [−1, 1]³ at 16³ in a white environment, seen straight along −z through its centre by
+// one pixel: with only absorbing media the pixel is the transmittance exp(−∫κ) along the z axis.
+inline Scene transmittanceProbe() {
+    Scene s;
+    setVolume(s, glm::vec3(-1.0f), glm::vec3(1.0f), glm::ivec3(16));
+    s.camera = cameraAt(glm::vec3(0.0f, 0.0f, 5.0f), glm::vec3(0.0f), 10.0f);
+    s.environment.color = glm::vec3(1.0f);
+    s.render.width = 1;
+    s.render.height = 1;
+    return s;
+}
+
 constexpr double kPi = 3.14159265358979323846;
 
 inline double relativeError(double value, double expected) {
