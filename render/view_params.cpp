@@ -103,6 +103,12 @@ void packClipPlanes(const Scene& scene, const RenderVolume& volume, shared::GpuV
         const glm::dvec3 n(c.normal);
         const double h =
             std::abs(n.x) * voxel.x + std::abs(n.y) * voxel.y + std::abs(n.z) * voxel.z;
+        // The parser normalises; a scene built in code may not (any length does: d and h scale
+        // alike), but a zero or non-finite normal has no side that stays.
+        if (!(h > 0.0) || !std::isfinite(h))
+            throw Error(scene.path + ":" + (c.jsonPath.empty() ? "/clip_planes" : c.jsonPath),
+                        "the normal is zero or not finite; it gives the side of the plane that "
+                        "stays");
         p.clipPlanes[k] = glm::vec4(glm::vec3(n * voxel / h),
                                     float(glm::dot(n, lo - glm::dvec3(c.point)) / h + 0.5));
     }

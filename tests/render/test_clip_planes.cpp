@@ -90,6 +90,12 @@ TEST_CASE("A clip plane takes a slab's absorption away on its far side, not on t
     both.clipPlanes.push_back(clipPlane(glm::vec3(0.0f, 0.0f, 0.2f), glm::vec3(0, 0, -1)));
     both.clipPlanes.push_back(clipPlane(glm::vec3(0.0f, 0.0f, -0.1f), glm::vec3(0, 0, 1)));
     CHECK(pixel(both, Backend::Cpu).r == Approx(std::exp(-0.3)).epsilon(2e-3));
+    // A scene built in code with a zero normal: one line at the plane, no picture of NaNs.
+    Scene zero = slabScene();
+    zero.clipPlanes.push_back(clipPlane(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f)));
+    zero.clipPlanes[0].normal = glm::vec3(0.0f);
+    CHECK_THROWS_WITH(pixel(zero, Backend::Cpu),
+                      Catch::Matchers::Contains(":/clip_planes: the normal is zero"));
     // A plane that lists another material leaves this one whole.
     Scene other = slabScene();
     other.materials.push_back(material("air", "density", glm::vec3(0.0f)));
