@@ -165,6 +165,7 @@ Light Session::light(std::size_t index) const {
     out.intensity = l.intensity;
     out.coneAngleDegrees = l.coneAngleDeg;
     out.coneSoftnessDegrees = l.coneSoftnessDeg;
+    out.angularDiameterDegrees = l.angularDiameterDeg;
     return out;
 }
 
@@ -172,6 +173,12 @@ void Session::setLight(std::size_t index, const Light& light) {
     (void)this->light(index);  // the index check
     if (!(light.intensity >= 0.0f))
         throw Error("light " + std::to_string(index), "intensity must be >= 0");
+    if (!(light.angularDiameterDegrees >= 0.0f &&
+          light.angularDiameterDegrees <= kMaxAngularDiameterDeg) ||
+        (light.kind != LightKind::Directional && light.angularDiameterDegrees != 0.0f))
+        throw Error("light " + std::to_string(index),
+                    "angular_diameter_degrees must be in [0, 30], and 0 but for a directional "
+                    "light");
     LightSpec& l = impl_->base.lights[index];
     l.type = light.kind == LightKind::Point         ? LightType::Point
              : light.kind == LightKind::Directional ? LightType::Directional
@@ -182,6 +189,7 @@ void Session::setLight(std::size_t index, const Light& light) {
     l.intensity = light.intensity;
     l.coneAngleDeg = light.coneAngleDegrees;
     l.coneSoftnessDeg = light.coneSoftnessDegrees;
+    l.angularDiameterDeg = light.angularDiameterDegrees;
 }
 
 std::vector<std::string> Session::materialNames() const {

@@ -133,10 +133,13 @@ std::optional<AnimationTarget> lightTarget(const Scene& scene, int i, const std:
         return make(TargetKind::LightCone, i, 1, 1e-3, 90.0);
     if (light.type == LightType::Spot && key == "cone_softness_deg")
         return make(TargetKind::LightSoftness, i, 1, 0.0, 90.0);
+    if (light.type == LightType::Directional && key == "angular_diameter_deg")
+        return make(TargetKind::LightAngularDiameter, i, 1, 0.0, kMaxAngularDiameterDeg);
     why = "this light animates " + std::string(positioned ? "position, " : "") +
           (directed ? "direction, " : "") + "color, intensity" +
-          (light.type == LightType::Spot ? ", cone_angle_deg, cone_softness_deg" : "") + ", not '" +
-          key + "'";
+          (light.type == LightType::Spot ? ", cone_angle_deg, cone_softness_deg" : "") +
+          (light.type == LightType::Directional ? ", angular_diameter_deg" : "") + ", not '" + key +
+          "'";
     return std::nullopt;
 }
 
@@ -335,6 +338,9 @@ void writeAnimationTarget(Scene& scene, const AnimationTarget& t, const float* v
             break;
         case TargetKind::LightSoftness:
             scene.lights[i].coneSoftnessDeg = std::min(v[0], scene.lights[i].coneAngleDeg);
+            break;
+        case TargetKind::LightAngularDiameter:
+            scene.lights[i].angularDiameterDeg = v[0];
             break;
         case TargetKind::ClipPoint:
             scene.clipPlanes[i].point = v3;

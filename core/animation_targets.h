@@ -23,6 +23,7 @@ enum class TargetKind {
     LightIntensity,
     LightCone,
     LightSoftness,
+    LightAngularDiameter,
     ClipPoint,
     ClipNormal,
     CameraPosition,

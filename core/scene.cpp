@@ -477,6 +477,15 @@ LightSpec readLight(const Value& value) {
         object.forbid("cone_angle_deg", "'cone_angle_deg'" + onlySpot);
         object.forbid("cone_softness_deg", "'cone_softness_deg'" + onlySpot);
     }
+    if (type == "directional") {
+        if (auto diameter = object.optional("angular_diameter_deg"))
+            light.angularDiameterDeg =
+                diameter->floatNumber(Range::closed(0.0, double(kMaxAngularDiameterDeg)));
+    } else {
+        object.forbid("angular_diameter_deg",
+                      "'angular_diameter_deg' is a directional light's disc; a " + type +
+                          " light is a point (\"type\": \"directional\" for a soft distant light)");
+    }
     object.finish();
     return light;
 }

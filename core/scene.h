@@ -269,7 +269,12 @@ struct LightSpec {
     float intensity = 1.0f;
     float coneAngleDeg = 30.0f;    // Spot: half-angle where the light ends
     float coneSoftnessDeg = 5.0f;  // Spot: width of the smooth edge inside the cone
+    // Directional: the angle the light's disc subtends (the sun: 0.53°), which softens its
+    // shadows and caustics; 0 is a single direction. kMaxAngularDiameterDeg at most.
+    float angularDiameterDeg = 0.0f;
 };
+
+constexpr float kMaxAngularDiameterDeg = 30.0f;
 
 struct CameraSpec {
     bool automatic = true;  // "camera": "auto" frames the render volume

@@ -142,7 +142,8 @@ PYBIND11_MODULE(eikon, m) {
         .def_readwrite("color", &eikon::Light::color)
         .def_readwrite("intensity", &eikon::Light::intensity)
         .def_readwrite("cone_angle_degrees", &eikon::Light::coneAngleDegrees)
-        .def_readwrite("cone_softness_degrees", &eikon::Light::coneSoftnessDegrees);
+        .def_readwrite("cone_softness_degrees", &eikon::Light::coneSoftnessDegrees)
+        .def_readwrite("angular_diameter_degrees", &eikon::Light::angularDiameterDegrees);
     py::class_<eikon::Material>(m, "Material")
         .def(py::init<>())
         .def_readwrite("name", &eikon::Material::name)

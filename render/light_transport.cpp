@@ -115,4 +115,14 @@ bool lightAllThroughFluence(const Scene& scene, ViewSetup& setup) {
     return true;
 }
 
+void requireLightsWithoutDisc(const Scene& scene, const std::string& method) {
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+        if (!(scene.lights[l].angularDiameterDeg > 0.0f)) continue;
+        throw Error(scene.path + ":/lights/" + std::to_string(l) + "/angular_diameter_deg",
+                    "the " + method +
+                        " method draws a light from a single direction; a disc light's soft "
+                        "shadows are drawn by \"plane_sweep\" and \"photons\"");
+    }
+}
+
 }  // namespace eikon

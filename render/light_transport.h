@@ -134,6 +134,9 @@ public:
     virtual std::string name() const = 0;
     // The shared stages the run reads.
     virtual TransportNeeds needs() const = 0;
+    // Whether it draws a directional light's disc (LightSpec::angularDiameterDeg): the registry
+    // refuses a scene with one for a method that does not (requireLightsWithoutDisc).
+    virtual bool drawsLightDiscs() const { return false; }
     // Writes the method's part of the view parameters (the setters in shaders/shared/gpu_types.h):
     // which lights come through the fluence (setLightInFluence, setReadsFluence) and how the view
     // finds transmittance (setShadowMode, setShadowStep); keeps what else of the scene its run
@@ -195,5 +198,10 @@ void appendReceiverMapsKey(const ViewSetup& setup, std::vector<unsigned char>& k
 // material scatters light toward the camera or a receiver shows it (setLightInFluence,
 // setReadsFluence). Returns false, and sets nothing, when nothing would show their light.
 bool lightAllThroughFluence(const Scene& scene, ViewSetup& setup);
+
+// Throws eikon::Error at the first light with a disc (angular_diameter_deg > 0), for a method
+// that draws every light from a single direction: its shadows would be sharp where the scene
+// asks for soft ones.
+void requireLightsWithoutDisc(const Scene& scene, const std::string& method);
 
 }  // namespace eikon

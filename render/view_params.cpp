@@ -25,13 +25,19 @@ shared::GpuLight packLight(const LightSpec& l) {
         const double s = std::sin(0.5 * glm::radians(degrees));
         return 2.0 * s * s;
     };
-    const double outer = versine(double(l.coneAngleDeg));
-    const double inner = versine(std::max(double(l.coneAngleDeg - l.coneSoftnessDeg), 0.0));
+    double outer = versine(double(l.coneAngleDeg));
+    double inner = versine(std::max(double(l.coneAngleDeg - l.coneSoftnessDeg), 0.0));
+    if (l.type == LightType::Directional) {  // no cone: the disc's angular radius
+        outer = versine(0.5 * double(l.angularDiameterDeg));
+        inner = 0.0;
+    }
     g.position = v4(l.position, type);
     g.direction = v4(glm::normalize(l.direction), float(outer));
     // smoothstep(inner, outer, v) needs inner < outer; a hard edge gets a hair of width, 1e-4 of
     // the cone's versine whatever its angle.
-    g.radiance = v4(l.color * l.intensity, float(std::min(inner, outer * (1.0 - 1e-4))));
+    g.radiance =
+        v4(l.color * l.intensity,
+           float(l.type == LightType::Spot ? std::min(inner, outer * (1.0 - 1e-4)) : inner));
     return g;
 }
 

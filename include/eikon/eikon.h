@@ -64,6 +64,8 @@ struct Light {
     float intensity = 1.0f;  // irradiance (directional) or radiant intensity per sr
     float coneAngleDegrees = 30.0f;
     float coneSoftnessDegrees = 5.0f;
+    // Directional: the angle its disc subtends (soft shadows; plane_sweep and photons draw it).
+    float angularDiameterDegrees = 0.0f;
 };
 
 // A material's optics (docs/scene-format.md#materials); per-unit-density coefficients.

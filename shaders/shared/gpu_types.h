@@ -57,7 +57,8 @@ struct GpuMaterial {
 struct GpuLight {
     vec4 position;   // xyz: world position (point, spot); w: type, EK_LIGHT_* (lightType)
     vec4 direction;  // xyz: unit direction the light travels (directional, spot); w: the outer
-                     // cone's versine 1 − cos θ (lightVersineOuter)
+                     // cone's versine 1 − cos θ (lightVersineOuter); a directional light's disc,
+                     // the versine of its angular radius (lightDiscVersine; 0: one direction)
     vec4 radiance;   // rgb: colour × intensity; w: the inner cone's versine, where the spot edge
                      // starts (lightVersineInner). Versines, not cosines: a 0.05° cone's cosine
                      // is 1 − 3.8e-7 and float resolves 6e-8 there, its versine to 1e-7 relative
@@ -248,6 +249,9 @@ inline float lightVersineOuter(const GpuLight& l) {
 inline float lightVersineInner(const GpuLight& l) {
     return l.radiance.w;  // a spot light's cone: full light inside
 }
+inline float lightDiscVersine(const GpuLight& l) {
+    return l.direction.w;  // a directional light's disc: 1 − cos of its angular radius
+}
 inline int receiverAxis(const GpuReceiver& r) {
     return int(r.plane.x);  // the normal's axis, 0, 1 or 2
 }
@@ -279,6 +283,7 @@ inline int receiverMapStart(const GpuReceiver& r) {
 #define lightType(l) (int((l).position.w))
 #define lightVersineOuter(l) ((l).direction.w)
 #define lightVersineInner(l) ((l).radiance.w)
+#define lightDiscVersine(l) ((l).direction.w)
 #define receiverAxis(r) (int((r).plane.x))
 #define receiverPosition(r) ((r).plane.y)
 #define receiverFacing(r) ((r).plane.z)

@@ -147,8 +147,39 @@ GpuPhoton startPhoton(vec3 origin, vec3 d, vec3 flux, float relativeThreshold) {
     return p;
 }
 
+// A direction uniform over the solid angle of the cap of versine `versine` (1 − cos of its
+// angular radius) around unit d, (u, w) a basis of the plane across d: the direction a sun-like
+// disc of uniform radiance sends photon `index`. A point uniform on the unit disc, by rejection
+// from the square (hash dimensions 2, 3, then 4, 5, ...; sixteen tries all miss once in 10^10
+// photons, which then keeps d), gives the azimuth as (x, y)/r and, since r² is uniform, the
+// versine v = versine·r², uniform as a cap's cos θ is. No sine or cosine: +, −, ×, ÷ and sqrt
+// round alike in the twin and on llvmpipe (exact_math.glsl), trigonometric built-ins do not.
+// sin θ comes from v (√(v(2 − v))), not from cos θ: at a 0.5° disc cos θ = 1 − 1e-5 is too near
+// 1 for float to give its sine.
+vec3 discDirection(vec3 d, vec3 u, vec3 w, float versine, int l, int index, uint seed, uint frame) {
+    for (uint attempt = 0u; attempt < 16u; ++attempt) {
+        const uint dimension = 2u + 2u * attempt;
+        const float x =
+            2.0f * hashToUnit(photonHash(seed, frame, uint(l), uint(index), dimension)) - 1.0f;
+        const float y =
+            2.0f * hashToUnit(photonHash(seed, frame, uint(l), uint(index), dimension + 1u)) - 1.0f;
+        const float r2 = x * x + y * y;
+        if (!(r2 < 1.0f) || !(r2 > 0.0f)) continue;
+        const float v = versine * r2;
+        const float sine = sqrt(v * (2.0f - v));
+        const float along = sine / sqrt(r2);
+        return normalize((1.0f - v) * d + (along * x) * u + (along * y) * w);
+    }
+    return d;
+}
+
 // Photon `index` (cell index % N, index / N of the N×N grid) of directional light l: a jittered
-// ray through the rectangle the box projects to on the plane perpendicular to the light.
+// ray through the rectangle the box projects to on the plane perpendicular to the light. A light
+// with a disc (lightDiscVersine > 0) tilts each photon into its own direction of the disc
+// (discDirection) through its point of the plane across d at the box's centre, and widens the
+// rectangle to cover the box's projection along every direction of the disc; the photons that
+// then miss the box never existed. The flux through the plane per
+// area is the light's irradiance either way.
 GpuPhoton generateDirectionalPhoton(int l, int photonsPerSide, int index, uint seed, uint frame,
                                     float relativeThreshold) {
     const GpuLight light = params.lights[l];
@@ -156,15 +187,31 @@ GpuPhoton generateDirectionalPhoton(int l, int photonsPerSide, int index, uint s
     vec3 u;
     vec3 w;
     lightPlaneBasis(d, u, w);
-    float cellArea;
-    const vec2 q = jitteredCellPoint(lightPlaneBounds(u, w), photonsPerSide, index, l, index, seed,
-                                     frame, cellArea);
+    const float versine = lightDiscVersine(light);
     // Start one box diagonal before the box's centre along d: outside the box, whatever d is.
     const vec3 centre = 0.5f * (vec3(params.volumeMin) + vec3(params.volumeMax));
     const float diagonal = length(vec3(params.volumeMax) - vec3(params.volumeMin));
-    const vec3 origin =
-        centre - diagonal * d + (q.x - dot(centre, u)) * u + (q.y - dot(centre, w)) * w;
-    return startPhoton(origin, d, vec3(light.radiance) * cellArea, relativeThreshold);
+    vec4 rect = lightPlaneBounds(u, w);
+    if (versine > 0.0f) {
+        // The box lies within halfDepth of the centre's plane along d: a photon tilted by up to
+        // the disc's radius α and aimed at a point of that plane meets the box only within
+        // halfDepth · tan α of the rectangle.
+        float halfDepth = 0.0f;
+        for (int c = 0; c < 8; ++c)
+            halfDepth = max(halfDepth, abs(dot(volumeCorner(c) - centre, d)));
+        const float margin = halfDepth * sqrt(versine * (2.0f - versine)) / (1.0f - versine);
+        rect += vec4(-margin, -margin, margin, margin);
+    }
+    float cellArea;
+    const vec2 q = jitteredCellPoint(rect, photonsPerSide, index, l, index, seed, frame, cellArea);
+    const vec3 through = (q.x - dot(centre, u)) * u + (q.y - dot(centre, w)) * w;
+    vec3 travel = d;
+    if (versine > 0.0f) travel = discDirection(d, u, w, versine, l, index, seed, frame);
+    // (Without a disc, the sum in the order it always had: the same photons to the bit.)
+    const vec3 origin = versine > 0.0f ? centre + through - diagonal * travel
+                                       : centre - diagonal * d + (q.x - dot(centre, u)) * u +
+                                             (q.y - dot(centre, w)) * w;
+    return startPhoton(origin, travel, vec3(light.radiance) * cellArea, relativeThreshold);
 }
 
 // ---- Point and spot lights: perspective grids on planes at unit distance from the light. A cell

@@ -63,7 +63,9 @@ struct GpuPlaneSweep {
     ivec4 plane;  // x: the light; y: EK_SWEEP_* flags; z: plane size along u; w: along w
     vec4 place;   // x: this plane's axis position (index units); y: the previous plane's;
                   // z: minCos; w: back-trace refinements
-    vec4 limit;   // x: the most irradiance a texel may hold (sweepAdvance); yzw: 0
+    vec4 limit;   // x: the most irradiance a texel may hold (sweepAdvance); y, z: the soft
+                  // light's kernel offset along u and w (texels; 0, 0: a single direction);
+                  // w: 0
 };
 
 #endif
@@ -216,6 +218,18 @@ void sweepAdvance(GpuPlaneSweep s, ivec2 t, EK_OUT(vec4) light, EK_OUT(vec4) dir
     const vec2 q2 = vec2(traced);
     vec3 lightQ, vq;
     sweepFetch(s, q2, lightQ, vq);
+    const vec2 soft = vec2(s.limit.y, s.limit.z);
+    if (soft.x != 0.0f || soft.y != 0.0f) {
+        // A light with a disc: the incremental convolution (thesis §4.2 after Patel et al. 2013),
+        // three equal taps along an offset the host turns by the golden angle each plane, so
+        // that every shadow and caustic already in the buffer spreads a little more each plane
+        // (planeSweepStep sizes the kernel; docs/methods.md#soft-distant-lights). Only the light
+        // is spread: the directions stay the rays'.
+        vec3 plus, minus, vPlus, vMinus;
+        sweepFetch(s, q2 + soft, plus, vPlus);
+        sweepFetch(s, q2 - soft, minus, vMinus);
+        lightQ = (lightQ + plus + minus) * (1.0f / 3.0f);
+    }
     const vec3 h = volumeVoxelSize();
     const vec3 p = sweepPoint(s, vec2(t) + vec2(0.5f), s.place.x);
     const vec3 q = sweepPoint(s, q2, s.place.y);

@@ -110,6 +110,21 @@ TEST_CASE("camera, lights, materials and size change between frames", "[api]") {
     CHECK_THROWS_AS(session.setImageSize(0, 10), eikon::Error);
 }
 
+TEST_CASE("a light's disc goes through the library, checked", "[api][soft_light]") {
+    eikon::Session session = eikon::Session::open(kFog, eikon::Device::Cpu);
+    eikon::Light light = session.light(0);
+    CHECK(light.angularDiameterDegrees == 0.0f);
+    light.kind = eikon::LightKind::Directional;
+    light.angularDiameterDegrees = 31.0f;
+    CHECK_THROWS_WITH(session.setLight(0, light),
+                      Catch::Contains("angular_diameter_degrees must be in [0, 30]"));
+    light.angularDiameterDegrees = 4.0f;
+    session.setLight(0, light);
+    CHECK(session.light(0).angularDiameterDegrees == 4.0f);
+    light.kind = eikon::LightKind::Spot;
+    CHECK_THROWS_AS(session.setLight(0, light), eikon::Error);
+}
+
 TEST_CASE("a material's dispersion reads and changes through the library", "[api][dispersion]") {
     eikon::Session session =
         eikon::Session::open(sourcePath("data/scenes/crystal_dispersion.json"), eikon::Device::Cpu);

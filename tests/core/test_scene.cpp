@@ -273,6 +273,15 @@ TEST_CASE("defaults inside sections that are present", "[scene]") {
         CHECK(spot.coneSoftnessDeg == 5.0f);
         CHECK(spot.direction == glm::vec3(0.0f, -1.0f, 0.0f));
     }
+    SECTION("a directional light's disc: 0 unless given, its angle as given") {
+        const eikon::Scene scene = eikon::parseScene(
+            sceneWith(R"("lights": [{"type": "directional", "direction": [0, -1, 0]},
+                                    {"type": "directional", "direction": [0, -1, 0],
+                                     "angular_diameter_deg": 0.53}])"),
+            "s.json");
+        CHECK(scene.lights.at(0).angularDiameterDeg == 0.0f);
+        CHECK(scene.lights.at(1).angularDiameterDeg == 0.53f);
+    }
     SECTION("a narrow cone shrinks the default softness to fit") {
         const eikon::Scene scene =
             eikon::parseScene(sceneWith(R"("lights": [{"type": "spot", "position": [0, 4, 0],
@@ -445,6 +454,16 @@ TEST_CASE("out-of-range values name the allowed range", "[scene]") {
                            "cone_angle_deg": 20, "cone_softness_deg": 25}])"));
         CHECK(f.where == "smoke.json:/lights/0/cone_softness_deg");
         CHECK_THAT(f.reason, Contains("expected a number in [0, 20] (at most cone_angle_deg)"));
+    }
+    SECTION("a disc on a point light, or wider than 30 degrees") {
+        Failure f = failureOf(sceneWith(
+            R"("lights": [{"type": "point", "position": [0, 1, 0], "angular_diameter_deg": 1}])"));
+        CHECK(f.where == "smoke.json:/lights/0/angular_diameter_deg");
+        CHECK_THAT(f.reason, Contains("a point light is a point"));
+        f = failureOf(sceneWith(R"("lights": [{"type": "directional", "direction": [0, -1, 0],
+                                              "angular_diameter_deg": 31}])"));
+        CHECK(f.where == "smoke.json:/lights/0/angular_diameter_deg");
+        CHECK_THAT(f.reason, Contains("expected a number in [0, 30]"));
     }
     SECTION("frame_end before frame_start") {
         const Failure f = failureOf(sceneWith(R"("time": {"frame_start": 5, "frame_end": 3})"));

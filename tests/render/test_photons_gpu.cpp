@@ -128,6 +128,12 @@ TEST_CASE("GPU photons equal the CPU twin for point and spot lights, run after r
                                         5.0f),
               48);
     }
+    SECTION("a directional light with a disc (each photon its own direction of the disc)") {
+        LightSpec sun =
+            GpuPhotonScene::directionalLight(glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f)), color);
+        sun.angularDiameterDeg = 15.0f;
+        check(sun, 48);
+    }
 }
 
 TEST_CASE("with the driver's own math the GPU photons agree with the CPU twin in total",

@@ -136,6 +136,16 @@ TEST_CASE("the GPU plane sweep equals the CPU twin bit for bit with the twin's r
         // And a second run on the same GPU objects: the same bits again.
         CHECK(sameBits(gpu.run(s, settings).fluence, cpu.fluence));
     }
+    SECTION("a directional light with a disc: the turning kernel of the soft light") {
+        LightSpec sun = PhotonScene::directionalLight(
+            glm::normalize(glm::vec3(0.15f, -1.0f, -0.25f)), glm::vec3(1.0f));
+        sun.angularDiameterDeg = 12.0f;
+        PhotonScene s(32, 1.5f, glm::vec3(0.3f), sun, softBall);
+        allThroughFluence(s);
+        const PlaneSweepSettings settings;
+        requireIdentical(gpu.run(s, settings),
+                         sweepLightsCpu(s.setup, {&s.field}, s.gradient, settings));
+    }
     SECTION("light lost where it turns along the planes is counted alike") {
         PhotonScene s(24, 2.0f, glm::vec3(0.0f), glm::normalize(glm::vec3(1.0f, -0.3f, 0.9f)),
                       softBall);

@@ -139,6 +139,26 @@ TEST_CASE("a scene animates lights, meshes, materials and camera from one clock"
                                 a.meshes[0].rotation.z, a.meshes[0].rotation.w)) == Approx(1.0f));
 }
 
+TEST_CASE("a directional light's disc animates, and only a directional light has one",
+          "[animation]") {
+    const Scene base = parseScene(R"({
+        "meshes": [{"name": "glass", "shape": {"type": "icosphere", "radius": 0.5}, "ior": 1.5}],
+        "lights": [{"type": "directional", "direction": [0, -1, 0]}],
+        "animation": [{"target": "/lights/0/angular_diameter_deg", "times": [0, 1],
+                       "values": [0, 8]}]})",
+                                  "sun.json");
+    const sim::SceneAnimation animation(base);
+    Scene a = base;
+    animation.apply(0.25, a);
+    CHECK(a.lights[0].angularDiameterDeg == Approx(2.0f));
+    CHECK_THROWS_WITH(parseScene(R"({"meshes": [{"name": "glass", "file": "g.obj", "ior": 1.5}],
+        "lights": [{"type": "point", "position": [0, 2, 0]}],
+        "animation": [{"target": "/lights/0/angular_diameter_deg", "times": [0], "values": [1]}]})",
+                                 "p.json"),
+                      Catch::Contains("p.json:/animation/0/target") &&
+                          Catch::Contains("this light animates position, color, intensity"));
+}
+
 TEST_CASE("animation errors name the track and say what was expected", "[animation]") {
     const std::string head = R"({"meshes": [{"name": "glass", "file": "g.obj", "ior": 1.5}],
         "lights": [{"type": "point", "position": [0, 2, 0]}], "animation": [)";

@@ -42,6 +42,7 @@ public:
 
     std::string name() const override { return "photons"; }
     TransportNeeds needs() const override;
+    bool drawsLightDiscs() const override { return true; }
     void configure(const Scene& scene, ViewSetup& setup) override;
     std::vector<unsigned char> cacheKey(
         const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const override;

@@ -54,6 +54,61 @@ glm::vec3 travelDirection(const shared::GpuLight& light, const shared::GpuViewPa
     return centre - glm::vec3(light.position);
 }
 
+// The variance along one axis of a bilinear fetch at offset x (texels) from a texel centre, as
+// a kernel: x² from where it lands, f(1 − f) (f = x − ⌊x⌋) from the two texels it blends.
+double bilinearTapVariance(double x) {
+    const double f = x - std::floor(x);
+    return x * x + f * (1.0 - f);
+}
+
+// The radius r (texels along one axis) at which the kernel of three equal taps at 0 and
+// ±r (cos θ, ·), turned through every θ, has variance `variance` (texels²) along the axis: the
+// mean of ⅔ bilinearTapVariance(r cos θ) over θ, which grows with r, solved by bisection.
+double softKernelRadius(double variance) {
+    const auto spread = [](double r) {
+        const int turns = 256;
+        double sum = 0.0;
+        for (int i = 0; i < turns; ++i)
+            sum += bilinearTapVariance(r * std::cos((i + 0.5) * 2.0 * M_PI / turns));
+        return 2.0 / 3.0 * sum / turns;
+    };
+    double lo = 0.0, hi = 1.0;
+    while (spread(hi) < variance) hi *= 2.0;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (spread(mid) < variance ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+// The soft light's kernel radii, in texels along the plane's u and w ((0, 0) for a light
+// without a disc). An edge's shadow from a disc of angular radius α, a distance D behind it, is
+// the disc's projection of radius D tan α, whose profile across the edge has variance
+// (D tan α)²/4. Each plane the kernel adds its own variance, σ² along either axis (the turns
+// make it the same along both), so D/ℓ planes of spacing ℓ (along the light) add (D/ℓ)σ². A
+// convolution spreads the variance with the depth, not with its square, so the two agree at one
+// depth only: D_ref, half the light's path across the volume, where σ² = ℓ D_ref tan²α / 4.
+// Closer to the occluder the penumbra comes out wider than the disc's (√(D_ref/D) × in width),
+// farther narrower (docs/methods.md#soft-distant-lights has the measured widths). The taps are
+// bilinear fetches, which blend two texels each: that blend is counted in σ²
+// (softKernelRadius), and it is most of it for a small disc.
+glm::dvec2 softLightRadius(const shared::GpuViewParams& p, const PlaneSweepPlan& plan) {
+    const shared::GpuLight& light = p.lights[plan.light];
+    const double versine = shared::lightType(light) == EK_LIGHT_DIRECTIONAL
+                               ? double(shared::lightDiscVersine(light))
+                               : 0.0;
+    if (!(versine > 0.0)) return glm::dvec2(0.0);
+    const double tangent = std::sqrt(versine * (2.0 - versine)) / (1.0 - versine);
+    const glm::dvec3 h = (glm::dvec3(glm::vec3(p.volumeMax)) - glm::dvec3(glm::vec3(p.volumeMin))) /
+                         glm::dvec3(glm::ivec3(p.resolution));
+    const double cosine = std::abs(double(light.direction[plan.axis]));
+    const double spacing = h[plan.axis] / double(plan.perVoxel) / cosine;       // ℓ
+    const double reference = 0.5 * double(plan.depth) * h[plan.axis] / cosine;  // D_ref
+    const double variance = spacing * reference * tangent * tangent / 4.0;      // σ², world
+    return glm::dvec2(softKernelRadius(variance / (h[plan.u] * h[plan.u])),
+                      softKernelRadius(variance / (h[plan.w] * h[plan.w])));
+}
+
 // Sums one voxel-centre plane of a light into the output volumes (sweepDepositTexel).
 void depositPlane(const shared::GpuPlaneSweep& sweep, const PlaneSweepPlan& plan, int slice,
                   const std::vector<glm::vec4>& light, const std::vector<glm::vec4>& direction,
@@ -112,6 +167,7 @@ PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int l, const PlaneSweepSet
     plan.perVoxel = std::max(s.planesPerVoxel, 1);
     plan.planes = (plan.depth - 1) * plan.perVoxel + 1;
     plan.light = l;
+    plan.softRadius = softLightRadius(p, plan);
     if (shared::lightType(light) != EK_LIGHT_DIRECTIONAL) {
         // Every ray must enter through the face the sweep starts from and cross planes forward.
         const float position = light.position[plan.axis];
@@ -141,6 +197,11 @@ shared::GpuPlaneSweep planeSweepStep(const ViewSetup& setup, const PlaneSweepPla
     sweep.place.z = settings.minCosine;
     sweep.place.w = float(std::max(settings.backTraceRefinements, 0));
     sweep.limit.x = irradianceCeiling(setup.params, plan.light, plan);
+    // The soft light's kernel, turned by the golden angle from plane to plane (in double from
+    // the plane's index: the same turn on every machine).
+    const double turn = double(j) * M_PI * (3.0 - std::sqrt(5.0));
+    sweep.limit.y = float(plan.softRadius.x * std::cos(turn));
+    sweep.limit.z = float(plan.softRadius.y * std::sin(turn));
     return sweep;
 }
 

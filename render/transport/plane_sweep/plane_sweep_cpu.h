@@ -15,6 +15,7 @@
 #include <functional>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "core/dense_grid.h"
@@ -47,6 +48,9 @@ struct PlaneSweepPlan {
     int depth = 0;       // voxels along the axis
     int perVoxel = 1;    // planes between two voxel centres
     int light = 0;
+    // A light with a disc: the radii of its kernel along u and w, texels (softLightRadius in
+    // plane_sweep_cpu.cpp); (0, 0) without one.
+    glm::dvec2 softRadius{0.0};
 };
 
 // The sweep of light l. Throws eikon::Error where a point or spot light is not outside the face
