@@ -121,7 +121,8 @@ void requireLightsWithoutDisc(const Scene& scene, const std::string& method) {
         throw Error(scene.path + ":/lights/" + std::to_string(l) + "/angular_diameter_deg",
                     "the " + method +
                         " method draws a light from a single direction; a disc light's soft "
-                        "shadows are drawn by \"plane_sweep\" and \"photons\"");
+                        "shadows are drawn by \"photons\", \"plane_sweep\" and "
+                        "\"light_volumes\"");
     }
 }
 

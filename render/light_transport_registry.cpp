@@ -19,17 +19,14 @@ std::unique_ptr<LightTransport> make(Settings settings, const TransportDevice& d
 
 // "auto": photons when light can bend on its way (some material has ior ≠ 1) and something
 // shows it (a material scatters it toward the camera, or a receiver); straight light volumes
-// otherwise, where they are exact and cheaper, unless a light has a disc, which they do not
-// draw: then the plane sweep, exact for straight light too and without the photons' noise.
+// otherwise, where they are exact and cheaper.
 std::string automaticMethod(const Scene& scene) {
-    bool refracts = false, scatters = false, disc = false;
+    bool refracts = false, scatters = false;
     for (const MaterialSpec& mat : scene.materials) {
         refracts = refracts || mat.ior != 1.0f;
         scatters = scatters || glm::any(glm::greaterThan(mat.scattering, glm::vec3(0.0f)));
     }
-    for (const LightSpec& light : scene.lights) disc = disc || light.angularDiameterDeg > 0.0f;
-    if (refracts && (scatters || !scene.receivers.empty())) return "photons";
-    return disc ? "plane_sweep" : "light_volumes";
+    return refracts && (scatters || !scene.receivers.empty()) ? "photons" : "light_volumes";
 }
 
 json::Json parseSection(const Scene& scene) {

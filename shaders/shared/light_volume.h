@@ -14,8 +14,10 @@
 // voxel per slice (measured against the marched reference in BENCHMARKS.md).
 
 bool sweepsLight(int l) {
+    // A light with a disc marches its disc's directions (lightTransmittance in optics.h).
     return shadowMode(params) == EK_SHADOWS_SWEPT &&
-           lightType(params.lights[l]) == EK_LIGHT_DIRECTIONAL;
+           lightType(params.lights[l]) == EK_LIGHT_DIRECTIONAL &&
+           !(lightDiscVersine(params.lights[l]) > 0.0f);
 }
 
 // The axis a directional light is swept along, and the order: +1 when it travels toward +axis.
@@ -36,7 +38,7 @@ vec3 marchedLightTransmittance(int l, ivec3 v) {
     vec3 toLight;
     float lightDistance;
     lightIrradiance(l, x, toLight, lightDistance);
-    return transmittanceToward(x, toLight, lightDistance);
+    return lightTransmittance(l, x, toLight, lightDistance);
 }
 
 vec3 sweptLightTransmittance(int l, ivec3 v) {

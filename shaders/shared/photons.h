@@ -81,14 +81,6 @@ float hashToUnit(uint h) {
     return float(h >> 8u) * (1.0f / 16777216.0f);
 }
 
-// A unit basis (u, w) of the plane perpendicular to unit d. For an axis-aligned d both are exact
-// axes, so the light-space grid tiles an axis-aligned box face cell for cell.
-void lightPlaneBasis(vec3 d, EK_OUT(vec3) u, EK_OUT(vec3) w) {
-    const vec3 helper = abs(d.y) < 0.999f ? vec3(0.0f, 1.0f, 0.0f) : vec3(1.0f, 0.0f, 0.0f);
-    u = normalize(cross(helper, d));
-    w = cross(d, u);
-}
-
 // Corner c (bit 0: x, bit 1: y, bit 2: z at the maximum) of the volume box.
 vec3 volumeCorner(int c) {
     return vec3((c & 1) != 0 ? params.volumeMax.x : params.volumeMin.x,

@@ -37,7 +37,7 @@ vec3 fluenceInScattering(vec3 p, vec3 dir, vec3 sigma[EK_MAX_MATERIALS]) {
 // marched toward it (EK_SHADOWS_MARCHED, the reference).
 vec3 lightShadow(int l, vec3 x, vec3 p, vec3 toLight, float lightDistance) {
     if (shadowMode(params) == EK_SHADOWS_MARCHED)
-        return transmittanceToward(x, toLight, lightDistance);
+        return lightTransmittance(l, x, toLight, lightDistance);
     return vec3(sampleVolume(EK_MAX_MATERIALS + l, p));
 }
 

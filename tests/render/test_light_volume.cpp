@@ -153,10 +153,17 @@ TEST_CASE("GPU light volumes equal the CPU twin", "[light][gpu]") {
     spot.type = LightType::Spot;
     spot.position = glm::vec3(-2.0f, 0.5f, 0.2f);
     spot.direction = glm::normalize(glm::vec3(1.0f, -0.2f, 0.0f));
+    LightSpec sun = directional({1.0f, -2.0f, 0.5f});
+    sun.angularDiameterDeg = 10.0f;  // 16 marches over its disc, swept shadows too
     for (const LightSpec& light :
-         {directional({0, -1, 0}), directional({1.0f, -2.0f, 0.5f}), point, spot}) {
+         {directional({0, -1, 0}), directional({1.0f, -2.0f, 0.5f}), point, spot, sun}) {
         for (ShadowMode mode : {ShadowMode::Volume, ShadowMode::Swept}) {
             for (bool hardwareTrilinear : {false, true}) {
+                // The disc's 16 marches a voxel are slow on llvmpipe: once, in swept mode,
+                // which marches a disc (sweepsLight).
+                if (light.angularDiameterDeg > 0.0f &&
+                    (mode != ShadowMode::Swept || hardwareTrilinear))
+                    continue;
                 BoxScene s(light, 20, mode);
                 const LightVolumeCpu cpu = s.cpu()[0];
                 VolumeTextures textures;

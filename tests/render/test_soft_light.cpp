@@ -12,6 +12,7 @@
 #include <cstring>
 #include <vector>
 
+#include "render/transport/light_volumes/light_volume.h"
 #include "render/transport/photons/photon_tracing.h"
 #include "render/transport/plane_sweep/plane_sweep_cpu.h"
 #include "support/photon_scene.h"
@@ -36,13 +37,15 @@ LightSpec discLight(float diameterDeg) {
     return light;
 }
 
-PhotonScene occluderScene(float diameterDeg) {
+// The light through the fluence (as photons and the sweep carry it), or not (as light volumes
+// shadow it).
+PhotonScene occluderScene(float diameterDeg, bool inFluence = true) {
     // The octree limits steps by κ, so that photons in n = 1 do not step over the thin slab.
     OctreeSettings octree;
     octree.kappaTolerance = 0.1f;
     PhotonScene s(kRes, 1.0f, glm::vec3(kOccluderKappa), discLight(diameterDeg), halfPlaneOccluder,
                   octree);
-    shared::setLightInFluence(s.setup.params, 0);
+    if (inFluence) shared::setLightInFluence(s.setup.params, 0);
     return s;
 }
 
@@ -231,4 +234,25 @@ TEST_CASE(
     // The kernel turns by plane index, not by chance: a rerun gives the same bits.
     const std::vector<glm::vec4> again = sweepFluence(diameter);
     CHECK(std::memcmp(again.data(), soft.data(), soft.size() * sizeof(glm::vec4)) == 0);
+}
+
+TEST_CASE("light volumes march a disc light's 16 directions: the disc's penumbra at every depth",
+          "[soft_light][light_volume]") {
+    const float diameter = 20.0f;
+    const auto transmittance = [](float d, int mode) {
+        PhotonScene s = occluderScene(d, false);
+        shared::setShadowMode(s.setup.params, mode);
+        shared::setShadowStep(s.setup.params, 2.0f / kRes);  // a voxel, as the method sets it
+        return computeLightVolumesCpu(s.setup, {&s.field})[0];
+    };
+    const std::vector<glm::vec4> sharp = transmittance(0.0f, EK_SHADOWS_VOLUME);
+    const std::vector<glm::vec4> soft = transmittance(diameter, EK_SHADOWS_VOLUME);
+    for (const double depth : {0.5, 1.0, 1.5}) {
+        const int k = sliceAtDepth(depth);
+        const double got = edgeVariance(profileAcrossEdge(soft, k), 0.6) -
+                           edgeVariance(profileAcrossEdge(sharp, k), 0.6);
+        const double disc = discPenumbraVariance(diameter, sliceDepth(k));
+        INFO("depth " << sliceDepth(k) << ": penumbra variance " << got << ", the disc's " << disc);
+        CHECK(got / disc == Approx(1.0).epsilon(0.06));
+    }
 }

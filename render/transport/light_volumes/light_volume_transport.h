@@ -35,6 +35,7 @@ public:
 
     std::string name() const override { return "light_volumes"; }
     TransportNeeds needs() const override { return {}; }
+    bool drawsLightDiscs() const override { return true; }  // 16 marches a disc
     void configure(const Scene& scene, ViewSetup& setup) override;
     std::vector<unsigned char> cacheKey(
         const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const override;
