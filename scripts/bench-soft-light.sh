@@ -12,6 +12,10 @@ RUNS=${1:-5}
 DIAMETERS=${2:-"0 0.53 8 20"}
 EIKON=${EIKON:-build/apps/eikon}
 METHOD=${METHOD:-plane_sweep}
+case "$METHOD" in  # the method's row in `eikon render --stats`
+    light_volumes) STAGE=light ;;
+    *) STAGE=$METHOD ;;
+esac
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
 
@@ -35,7 +39,7 @@ PY
             exit 1
         }
     done
-    /usr/bin/python3 - "$OUT/stats.txt" "$diameter" "$METHOD" <<'PY'
+    /usr/bin/python3 - "$OUT/stats.txt" "$diameter" "$STAGE" <<'PY'
 import statistics, sys
 path, diameter, method = sys.argv[1:4]
 stages = {method: [], "view": []}
