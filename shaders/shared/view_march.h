@@ -263,36 +263,48 @@ vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
                                     unusedFirst, unusedSecond);
 }
 
-// What a kept reflection shows: its ray traced through the volume, its own reflections seeing the
-// environment, then the environment where it leaves; × its weight.
-vec3 keptReflectionRadiance(KeptReflection r) {
-    vec3 radiance = vec3(0.0f);
-    vec3 transmittance = vec3(1.0f);
-    vec3 exitDir;
-    KeptReflection unusedFirst, unusedSecond;
-    traceCurvedRayReflecting(vec3(r.origin), vec3(r.dir), true, r.dir.w, 0, radiance, transmittance,
-                             exitDir, unusedFirst, unusedSecond);
-    return vec3(r.weight) * (radiance + transmittance * environmentRadiance(exitDir));
-}
-
 // Radiance reaching the camera along a ray, and the ray's transmittance through the volume.
 // Straight rays integrate exactly-clipped steps along t; curved rays (curvedRays) follow
-// the ray equation inside the volume, where n varies, and leave along their bent direction.
+// the ray equation inside the volume, where n varies, and leave along their bent direction; up to
+// two reflections at sharp surfaces are kept and traced the same way, each seeing the environment
+// at its own reflections. The camera's ray and the kept reflections are passes of one loop around
+// one call of the trace, the count of passes known only at run time: shader compilers inline
+// every call and unroll a loop of known count, and three copies of the trace (each with the light
+// marches of accumulateStep) took llvmpipe 47 s to compile view.comp (link and the first
+// dispatch, where it generates code), 221 s with EK_HARDWARE_TRILINEAR; one takes 16 s and 69 s
+// (BENCHMARKS.md, "Compiling the shaders on llvmpipe").
 vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
     transmittance = vec3(1.0f);
     vec3 radiance = vec3(0.0f);
     const vec2 span = intersectVolume(origin, dir);
     if (!(span.x < span.y)) return environmentRadiance(dir);
     if (curvedRays(params)) {
-        vec3 exitDir;
-        KeptReflection first, second;
-        traceCurvedRayReflecting(origin + dir * span.x, dir, true, 0.0f, 2, radiance, transmittance,
-                                 exitDir, first, second);
-        radiance += transmittance * environmentRadiance(exitDir);
-        if (first.weight.x + first.weight.y + first.weight.z > 0.0f)
-            radiance += keptReflectionRadiance(first);
-        if (second.weight.x + second.weight.y + second.weight.z > 0.0f)
-            radiance += keptReflectionRadiance(second);
+        KeptReflection first, second;  // the camera ray's pass keeps them
+        first.weight = second.weight = vec4(0.0f);
+        first.origin = second.origin = first.dir = second.dir = vec4(0.0f);
+        int passes = 1;
+        for (int pass = 0; pass < passes; ++pass) {
+            const KeptReflection r = pass == 1 ? first : second;  // passes 1 and 2
+            if (pass > 0 && !(r.weight.x + r.weight.y + r.weight.z > 0.0f)) continue;
+            vec3 passRadiance = vec3(0.0f);
+            vec3 passTransmittance = vec3(1.0f);
+            vec3 exitDir;
+            KeptReflection keptFirst, keptSecond;
+            traceCurvedRayReflecting(pass == 0 ? origin + dir * span.x : vec3(r.origin),
+                                     pass == 0 ? dir : vec3(r.dir), true,
+                                     pass == 0 ? 0.0f : r.dir.w, pass == 0 ? 2 : 0, passRadiance,
+                                     passTransmittance, exitDir, keptFirst, keptSecond);
+            const vec3 seen = passRadiance + passTransmittance * environmentRadiance(exitDir);
+            if (pass == 0) {
+                radiance = seen;
+                transmittance = passTransmittance;
+                first = keptFirst;
+                second = keptSecond;
+                passes = 3;  // a pass whose reflection has no weight is skipped above
+            } else {
+                radiance += vec3(r.weight) * seen;
+            }
+        }
         return radiance;
     }
     const float h = viewStep(params);
