@@ -246,13 +246,15 @@ Image FrameRenderer::render(int frame) {
             refractionGpu_->computeChannelGradients(setup, *textures_, *paramsBuffer_,
                                                     timer_.get());
         if (transportChanged)
-            transport_->runGpu({setup, *textures_, *refractionGpu_, timer_.get()});
+            transport_->runGpu({setup, *textures_, *refractionGpu_, timer_.get(), disperses});
     }
-    if (transportChanged && disperses && !needs.dispersion && !warnedDispersion_) {
+    // Only a method that bends light (reads ∇n) misses dispersion; straight light has none.
+    if (transportChanged && disperses && needs.gradient && !needs.dispersion &&
+        !warnedDispersion_) {
         logWarning("render.light_transport: the \"" + transport_->name() +
                    "\" method carries light along the green channel's index in every channel: "
-                   "view rays disperse, its caustics do not (\"method\": \"wavefront\" "
-                   "disperses both)");
+                   "view rays disperse, its caustics do not (\"method\": \"photons\" or "
+                   "\"wavefront\" disperse both)");
         warnedDispersion_ = true;  // once per renderer, not every frame
     }
     if (transportChanged) {

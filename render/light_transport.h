@@ -124,6 +124,9 @@ struct TransportInputsGpu {
     VolumeTextures& fields;
     const RefractionVolumesGpu& refraction;
     GpuStageTimer* timer;
+    // Under dispersion (dispersesView(setup)): refraction holds the red and blue channels' ∇n
+    // volumes too (RefractionVolumesGpu::channelGradientTexture).
+    bool dispersion = false;
 };
 
 class LightTransport {

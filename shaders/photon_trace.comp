@@ -24,6 +24,10 @@ layout(local_size_x = 64) in;
 #include "volume_bindings.glsl"
 #include "fixed_point.glsl"
 
+// The colour channels this pass deposits (photons.h): (1, 1, 1), or under dispersion one
+// channel's 1 per pass, the pass tracing through that channel's ∇n volume.
+uniform vec3 photonChannels;
+
 // The hooks photons.h calls, declared before it and defined after (they need its struct).
 vec4 fetchOctree(ivec3 voxel);
 void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir);
@@ -141,10 +145,12 @@ void main() {
     // dropped.
     const int state = int(p.position.w);
     const int leftAt = state == EK_PHOTON_ESCAPED ? 0 : state == EK_PHOTON_RECEIVED ? 22 : 12;
+    const vec3 lost = extinguished * photonChannels;
+    const vec3 left = vec3(p.flux) * photonChannels;
     for (int c = 0; c < 3; ++c) {
-        const uvec2 e = toFixed(extinguished[c], totalScale[c]);
+        const uvec2 e = toFixed(lost[c], totalScale[c]);
         EK_ADD_FIXED(totals, 6 + 2 * c, e);
-        const uvec2 l = toFixed(p.flux[c], totalScale[c]);
+        const uvec2 l = toFixed(left[c], totalScale[c]);
         EK_ADD_FIXED(totals, leftAt + 2 * c, l);
     }
     const uvec2 steps = uvec2(uint(int(p.direction.w)), 0u);

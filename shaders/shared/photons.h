@@ -14,7 +14,13 @@
 //                                   adds one segment piece to the radiance volume;
 //   void depositReceiverTexel(int index, vec3 flux)
 //                                   adds flux (power) to texel `index` of the receiver map
-//                                   (receivers.h, which must be included before this file).
+//                                   (receivers.h, which must be included before this file);
+//   vec3 photonChannels             the colour channels this trace deposits (1 each; under
+//                                   dispersion one pass per channel, that channel's 1 alone:
+//                                   render/transport/photons/photon_tracing.h). A photon carries
+//                                   all three channels' flux whatever the mask, so it is dropped
+//                                   and cut exactly when a photon of one pass would be; only
+//                                   what it deposits and leaves in the totals is masked.
 //
 // Units. A directional light of irradiance E (GpuLight.radiance, power per unit area across the
 // beam) sends photons through an N×N grid of cells over the rectangle that the volume box
@@ -381,10 +387,12 @@ void depositSegment(vec3 a, vec3 b, float s, vec3 dir, vec3 flux0, vec3 kappa) {
         if (tNext > t && all(greaterThanEqual(voxel, ivec3(0))) && all(lessThan(voxel, res))) {
             const float t0 = t * s;
             const float len = (tNext - t) * s;
+            // The mask last: × 1 keeps the bits of a trace without dispersion.
             const vec3 fluxLength =
                 flux0 * exp(-kappa * t0) *
                 vec3(photonDecayIntegral(kappa.x, len), photonDecayIntegral(kappa.y, len),
-                     photonDecayIntegral(kappa.z, len));
+                     photonDecayIntegral(kappa.z, len)) *
+                photonChannels;
             // Rec. 709 luminance: one scalar weight per piece for the mean direction.
             const float lum = dot(fluxLength, vec3(0.2126f, 0.7152f, 0.0722f));
             depositVoxel(voxel, fluxLength, lum * dir);
@@ -493,7 +501,7 @@ int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, int integrator,
     if (receiver >= 0) {
         // Voxel receivers have no map: the photon volumes beside them hold their light.
         if (front && receiverKind(params.receivers[receiver]) == EK_RECEIVER_PLANE)
-            depositOnReceiver(receiver, next, fluxNext);
+            depositOnReceiver(receiver, next, fluxNext * photonChannels);
         return EK_PHOTON_RECEIVED;
     }
     if (leaves) return EK_PHOTON_ESCAPED;

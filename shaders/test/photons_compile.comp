@@ -9,6 +9,7 @@ layout(local_size_x = 64) in;
 vec4 fetchOctree(ivec3 voxel);
 void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir);
 void depositReceiverTexel(int index, vec3 flux);
+uniform vec3 photonChannels;
 
 #include "../shared/photons.h"
 

@@ -31,6 +31,7 @@ struct PhotonTestKernel : VolumeAccessCpu {
     vec4 fetchOctree(ivec3) const { return vec4(0.0f); }
     void depositVoxel(ivec3, vec3, vec3) const {}
     void depositReceiverTexel(int, vec3) const {}
+    vec3 photonChannels = vec3(1.0f);
 #include "shaders/shared/photons.h"
 };
 EK_NAMESPACE_END

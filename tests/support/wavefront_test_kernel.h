@@ -10,6 +10,7 @@ struct WavefrontTestKernel : VolumeAccessCpu {
     vec4 fetchOctree(ivec3) const { return vec4(0.0f); }
     void depositVoxel(ivec3, vec3, vec3) const {}
     void depositReceiverTexel(int, vec3) const {}
+    vec3 photonChannels = vec3(1.0f);
 #include "shaders/shared/photons.h"
 #include "shaders/shared/wavefront.h"
 };

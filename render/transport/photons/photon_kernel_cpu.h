@@ -26,6 +26,8 @@ struct PhotonKernelCpu : VolumeAccessCpu {
     dvec4 scale = dvec4(0.0);                          // rgb: flux·length channels; w: direction
     std::atomic<int64_t>* receiverDeposits = nullptr;  // 3 per receiver map texel: r, g, b
     dvec3 receiverScale = dvec3(0.0);                  // the totals' per-channel scales
+    // The colour channels deposited (photons.h): all, or one per pass under dispersion.
+    vec3 photonChannels = vec3(1.0f);
 
     vec4 fetchOctree(ivec3 v) const { return octree[voxelIndex(v)]; }
 

@@ -45,12 +45,14 @@ struct PhotonVolumes {
 // nothing was computed. Shared by the particle methods that fill PhotonVolumes.
 TransportOutputCpu transportOutputOf(const PhotonVolumes& volumes);
 
-// CPU twin: traceLightPhotonsCpu, then smoothVolumeCpu of both volumes.
+// CPU twin: traceLightPhotonsCpu (one pass per colour channel with channelGradients under
+// dispersion), then smoothVolumeCpu of both volumes.
 PhotonVolumes computePhotonRadianceCpu(const ViewSetup& setup,
                                        const std::vector<const DenseGrid*>& slotGrids,
                                        const RefractionVolumeCpu& gradient,
                                        const RefractionVolumeCpu& octree,
-                                       const PhotonSettings& settings);
+                                       const PhotonSettings& settings,
+                                       const ChannelGradientsCpu* channelGradients = nullptr);
 
 class PhotonRadianceGpu {
 public:
@@ -61,10 +63,11 @@ public:
     PhotonRadianceGpu& operator=(const PhotonRadianceGpu&) = delete;
 
     // Traces, resolves and smooths. The field textures are uploaded, the ∇n and octree volumes
-    // computed, the params SSBO bound at EK_SSBO_VIEW_PARAMS. Timer stages: "photons", "smooth".
+    // computed (under dispersion the red and blue ∇n volumes too), the params SSBO bound at
+    // EK_SSBO_VIEW_PARAMS. Timer stages: "photons", "smooth".
     void compute(const ViewSetup& setup, VolumeTextures& fields,
                  const RefractionVolumesGpu& refraction, const PhotonSettings& settings,
-                 GpuStageTimer* timer);
+                 GpuStageTimer* timer, bool dispersion = false);
     // Binds the smoothed radiance and direction volumes to texture units EK_UNIT_FLUENCE and
     // EK_UNIT_FLUENCE_DIRECTION (the output contract's fluence), and the receiver map to
     // EK_SSBO_RECEIVER_MAP (shaders/shared/bindings.h).

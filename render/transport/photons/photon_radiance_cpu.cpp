@@ -7,8 +7,10 @@ PhotonVolumes computePhotonRadianceCpu(const ViewSetup& setup,
                                        const std::vector<const DenseGrid*>& slotGrids,
                                        const RefractionVolumeCpu& gradient,
                                        const RefractionVolumeCpu& octree,
-                                       const PhotonSettings& settings) {
-    PhotonResultCpu traced = traceLightPhotonsCpu(setup, slotGrids, gradient, octree, settings);
+                                       const PhotonSettings& settings,
+                                       const ChannelGradientsCpu* channelGradients) {
+    PhotonResultCpu traced =
+        traceLightPhotonsCpu(setup, slotGrids, gradient, octree, settings, channelGradients);
     PhotonVolumes out;
     out.radiance = smoothVolumeCpu(traced.radiance, traced.resolution);
     out.direction = smoothVolumeCpu(traced.direction, traced.resolution);

@@ -46,11 +46,12 @@ void PhotonRadianceGpu::allocate(glm::ivec3 res) {
 
 void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
                                 const RefractionVolumesGpu& refraction,
-                                const PhotonSettings& settings, GpuStageTimer* timer) {
+                                const PhotonSettings& settings, GpuStageTimer* timer,
+                                bool dispersion) {
     const shared::GpuViewParams& p = setup.params;
     const glm::ivec3 res(p.resolution.x, p.resolution.y, p.resolution.z);
     allocate(res);
-    tracer_->trace(setup, fields, refraction, settings, timer);
+    tracer_->trace(setup, fields, refraction, settings, timer, dispersion);
 
     if (timer) timer->begin("smooth");
     // Neither volume may stay bound for sampling while images write it.

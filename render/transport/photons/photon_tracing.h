@@ -78,13 +78,14 @@ struct PhotonResultCpu {
     PhotonTotals totals;
     glm::dvec4 fixedPointScale{0.0};  // rgb: radiance channels; w: direction (see above)
     int64_t steps = 0;                // photon steps taken, all photons
-    int64_t photonsTraced = 0;        // photons that entered the box
+    int64_t photonsTraced = 0;        // photons that entered the box, all passes
     // Still active at maxSteps, or when the stop rule ended the march (PhotonSettings::
     // stopFraction); their flux counts as dropped.
     int64_t photonsCut = 0;
     int rounds = 0;  // rounds of the march that had photons to march (PhotonSettings)
     // Every photon's final state, light after light, index order: for escaped photons the exit
     // point and the direction v they leave with (shared::GpuPhoton, EK_PHOTON_* in position.w).
+    // Under dispersion the passes' photons one after the other: red's, green's, blue's.
     std::vector<shared::GpuPhoton> photons;
 };
 
@@ -118,6 +119,19 @@ PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings);
 // the photon and wavefront plans (one patch per cell).
 std::vector<PhotonLightPlan> planLightGrids(const ViewSetup& setup, int side, size_t& particles);
 
+// Dispersion (a dispersive material seen along curved rays: dispersesView): every photon is
+// traced once per colour channel, each pass bending through that channel's ∇n volume (its n at
+// every point, the entry's v = n·d included) and depositing that channel alone; the photons
+// carry all three channels' flux in every pass, so each pass drops and cuts them exactly as a
+// trace of that channel's n would, and channel c of the deposits is, bit for bit, what a glass
+// without dispersion of index n_c gives. The three passes share one set of fixed-point sums and
+// scales (those of one pass carrying all three), so with equal n in every channel they deposit
+// the plain trace's power·length bytes; the luminance-weighted direction, summed per channel,
+// rounds differently (within a quantum per pass). Three times the steps and the time.
+int photonPassCount(bool dispersion);
+// The channels pass `pass` of `passes` deposits: (1, 1, 1) alone, else red, green, blue.
+glm::vec3 photonPassChannels(int pass, int passes);
+
 // Steps every active photon takes in round `round` (from 0) of plan: stepsPerRound, less in a
 // last round that reaches maxSteps. Every photon still active after a round has taken all of its
 // steps, so all of them have taken the same number and the step cap is one count for all.
@@ -136,10 +150,13 @@ std::vector<shared::GpuPhoton> generatePhotonsCpu(const ViewSetup& setup,
 
 // Traces the photons of every light of setup (PhotonPlan) through the media: slotGrids are the
 // field volumes (as for computeIndexGradientCpu), gradient and octree the refraction volumes.
+// With channelGradients (the red and blue ∇n volumes, `gradient` the green one's) and a setup
+// that disperses (dispersesView), one pass per colour channel (photonPassCount).
 PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
                                      const std::vector<const DenseGrid*>& slotGrids,
                                      const RefractionVolumeCpu& gradient,
                                      const RefractionVolumeCpu& octree,
-                                     const PhotonSettings& settings = {});
+                                     const PhotonSettings& settings = {},
+                                     const ChannelGradientsCpu* channelGradients = nullptr);
 
 }  // namespace eikon

@@ -8,6 +8,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "core/error.h"
+
 #include "render/transport/photons/fixed_deposits_cpu.h"
 #include "render/transport/photons/lights_missing_volume.h"
 #include "render/transport/photons/photon_tracing.h"
@@ -53,6 +55,17 @@ PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings) {
     return plan;
 }
 
+int photonPassCount(bool dispersion) {
+    return dispersion ? 3 : 1;
+}
+
+glm::vec3 photonPassChannels(int pass, int passes) {
+    if (passes == 1) return glm::vec3(1.0f);
+    glm::vec3 channels(0.0f);
+    channels[pass] = 1.0f;
+    return channels;
+}
+
 int photonRoundSteps(const PhotonPlan& plan, int round) {
     return std::min(plan.stepsPerRound, plan.maxSteps - round * plan.stepsPerRound);
 }
@@ -81,55 +94,42 @@ std::vector<shared::GpuPhoton> generatePhotonsCpu(const ViewSetup& setup,
     return photons;
 }
 
-PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
-                                     const std::vector<const DenseGrid*>& slotGrids,
-                                     const RefractionVolumeCpu& gradient,
-                                     const RefractionVolumeCpu& octree,
-                                     const PhotonSettings& settings) {
-    shared::PhotonKernelCpu kernel{{setup.params}};
-    for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
-    kernel.gradient = gradient.data();
-    kernel.octree = octree.data();
+namespace {
 
-    PhotonResultCpu result;
-    const PhotonPlan plan = planPhotons(setup, settings);
-    result.resolution = plan.resolution;
-    const float minStep = plan.minStep;
-    const int integrator = static_cast<int>(settings.integrator);
+// Under dispersion (photonPassCount): the ∇n volume each pass bends through, red, green, blue.
+std::vector<const RefractionVolumeCpu*> passGradients(const ViewSetup& setup,
+                                                      const RefractionVolumeCpu& gradient,
+                                                      const ChannelGradientsCpu* channelGradients) {
+    if (!channelGradients || !dispersesView(setup)) return {&gradient};
+    if (channelGradients->red.size() != gradient.size() ||
+        channelGradients->blue.size() != gradient.size())
+        throw Error("photons", "dispersion needs the red and blue channels' gradient volumes");
+    return {&channelGradients->red, &gradient, &channelGradients->blue};
+}
 
-    // Step 4: generate every light's photons; the emitted power, summed in index order, sets the
-    // fixed-point scales before anything is deposited.
-    result.photons = generatePhotonsCpu(setup, gradient, settings);
-    warnLightsMissingVolume(setup, plan.lights, [&](size_t i) {
-        return int(result.photons[i].position.w) == EK_PHOTON_ACTIVE;
-    });
-    for (const shared::GpuPhoton& p : result.photons) {
-        if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
-        result.totals.emitted += glm::dvec3(glm::vec3(p.flux));
-        ++result.photonsTraced;
-    }
-
-    FixedDepositsCpu sums(setup, result.totals.emitted);
-    sums.attach(kernel);
-    result.fixedPointScale = sums.scale();
-
-    // Step 5: the march in rounds (PhotonSettings::stepsPerRound), as on the GPU: each round
-    // marches the active photons by one task per photon, then the ones still active are
-    // compacted into the next round's list. A photon's extinguished flux is carried over the
-    // rounds, so that its bookkeeping is the same float sum as in one uninterrupted march.
-    std::vector<glm::vec3> extinguished(result.photons.size(), glm::vec3(0.0f));
-    // The flux a photon that has ended leaves: escaped, received or dropped (cut included).
+// Step 5 for one pass: the march in rounds (PhotonSettings::stepsPerRound), as on the GPU: each
+// round marches the active photons by one task per photon, then the ones still active are
+// compacted into the next round's list. A photon's extinguished flux is carried over the rounds,
+// so that its bookkeeping is the same float sum as in one uninterrupted march. Returns the rounds
+// that had photons.
+int marchPhotonsCpu(shared::PhotonKernelCpu& kernel, const PhotonPlan& plan, int integrator,
+                    int64_t photonsTraced, FixedDepositsCpu& sums,
+                    std::vector<shared::GpuPhoton>& photons) {
+    std::vector<glm::vec3> extinguished(photons.size(), glm::vec3(0.0f));
+    // The flux a photon that has ended leaves: escaped, received or dropped (cut included), in
+    // the channels this pass deposits.
     auto finish = [&](const shared::GpuPhoton& p, glm::vec3 lost) {
         const int state = int(p.position.w);
-        sums.finish(state, glm::vec3(p.flux), lost);
+        sums.finish(state, glm::vec3(p.flux) * kernel.photonChannels, lost * kernel.photonChannels);
         sums.addSteps(int64_t(p.direction.w));
         if (state == EK_PHOTON_CUT) sums.addCut();
     };
     std::vector<uint32_t> active;
-    for (size_t i = 0; i < result.photons.size(); ++i)
-        if (int(result.photons[i].position.w) == EK_PHOTON_ACTIVE) active.push_back(uint32_t(i));
-    const int64_t stopCount = photonStopCount(plan, result.photonsTraced);
+    for (size_t i = 0; i < photons.size(); ++i)
+        if (int(photons[i].position.w) == EK_PHOTON_ACTIVE) active.push_back(uint32_t(i));
+    const int64_t stopCount = photonStopCount(plan, photonsTraced);
     bool stop = false;  // the stop rule fired: this round cuts instead of marching
+    int rounds = 0;
     for (int round = 0; round < plan.rounds && !active.empty(); ++round) {
         const int steps = photonRoundSteps(plan, round);
         const bool last = round == plan.rounds - 1;
@@ -137,9 +137,9 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
                           [&](const tbb::blocked_range<size_t>& r) {
                               for (size_t k = r.begin(); k != r.end(); ++k) {
                                   const uint32_t i = active[k];
-                                  shared::GpuPhoton& p = result.photons[i];
+                                  shared::GpuPhoton& p = photons[i];
                                   if (!stop)
-                                      kernel.marchPhoton(p, minStep, integrator, steps,
+                                      kernel.marchPhoton(p, plan.minStep, integrator, steps,
                                                          extinguished[i]);
                                   const bool still = int(p.position.w) == EK_PHOTON_ACTIVE;
                                   if (still && !stop && !last) continue;
@@ -147,16 +147,67 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
                                   finish(p, extinguished[i]);
                               }
                           });
-        ++result.rounds;
+        ++rounds;
         if (stop) break;
         // Compaction; in index order here, in any order on the GPU (photons are independent).
-        active.erase(
-            std::remove_if(
-                active.begin(), active.end(),
-                [&](uint32_t i) { return int(result.photons[i].position.w) != EK_PHOTON_ACTIVE; }),
-            active.end());
+        active.erase(std::remove_if(active.begin(), active.end(),
+                                    [&](uint32_t i) {
+                                        return int(photons[i].position.w) != EK_PHOTON_ACTIVE;
+                                    }),
+                     active.end());
         stop = int64_t(active.size()) < stopCount;
     }
+    return rounds;
+}
+
+}  // namespace
+
+PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
+                                     const std::vector<const DenseGrid*>& slotGrids,
+                                     const RefractionVolumeCpu& gradient,
+                                     const RefractionVolumeCpu& octree,
+                                     const PhotonSettings& settings,
+                                     const ChannelGradientsCpu* channelGradients) {
+    shared::PhotonKernelCpu kernel{{setup.params}};
+    for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
+    kernel.octree = octree.data();
+    const std::vector<const RefractionVolumeCpu*> gradients =
+        passGradients(setup, gradient, channelGradients);
+    const int passes = int(gradients.size());
+
+    PhotonResultCpu result;
+    const PhotonPlan plan = planPhotons(setup, settings);
+    result.resolution = plan.resolution;
+    const int integrator = static_cast<int>(settings.integrator);
+
+    // Step 4: generate every light's photons; the emitted power, summed in index order, sets the
+    // fixed-point scales before anything is deposited. A photon's flux and whether it enters the
+    // box do not depend on n, so every pass emits these photons' power, one channel each.
+    std::vector<shared::GpuPhoton> photons = generatePhotonsCpu(setup, gradient, settings);
+    warnLightsMissingVolume(setup, plan.lights, [&](size_t i) {
+        return int(photons[i].position.w) == EK_PHOTON_ACTIVE;
+    });
+    int64_t tracedPerPass = 0;
+    for (const shared::GpuPhoton& p : photons) {
+        if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
+        result.totals.emitted += glm::dvec3(glm::vec3(p.flux));
+        ++tracedPerPass;
+    }
+
+    FixedDepositsCpu sums(setup, result.totals.emitted);
+    sums.attach(kernel);
+    result.fixedPointScale = sums.scale();
+
+    for (int pass = 0; pass < passes; ++pass) {
+        kernel.gradient = gradients[pass]->data();
+        kernel.photonChannels = photonPassChannels(pass, passes);
+        // Each channel's photons start with its own n (v = n·d).
+        if (pass > 0 || gradients[pass] != &gradient)
+            photons = generatePhotonsCpu(setup, *gradients[pass], settings);
+        result.rounds += marchPhotonsCpu(kernel, plan, integrator, tracedPerPass, sums, photons);
+        result.photons.insert(result.photons.end(), photons.begin(), photons.end());
+    }
+    result.photonsTraced = tracedPerPass * passes;
 
     sums.readTotals(result.totals);
     result.steps = sums.steps();

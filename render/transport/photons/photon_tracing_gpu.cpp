@@ -67,14 +67,14 @@ std::vector<GLuint> readWords(GLuint buffer, size_t first, size_t count) {
     return words;
 }
 
-// Runs `program` over photons [0, count) of its range in dispatches the driver must accept (GL
-// promises 65535 work groups in x, fewer than a cube layout of N = 1024 needs): each dispatch
-// covers photonCount photons from photonFirst.
-void dispatchPhotons(const ShaderProgram& program, size_t count) {
+// Runs `program` over photons [base, base + count) of its range in dispatches the driver must
+// accept (GL promises 65535 work groups in x, fewer than a cube layout of N = 1024 needs): each
+// dispatch covers photonCount photons from photonFirst.
+void dispatchPhotons(const ShaderProgram& program, size_t count, size_t base = 0) {
     const size_t perDispatch = size_t(65535) * kLocalSize;
     for (size_t first = 0; first < count; first += perDispatch) {
         const size_t n = std::min(count - first, perDispatch);
-        program.setInt("photonFirst", int(first));
+        program.setInt("photonFirst", int(base + first));
         program.setInt("photonCount", int(n));
         glDispatchCompute(GLuint((n + kLocalSize - 1) / kLocalSize), 1, 1);
     }
@@ -102,18 +102,30 @@ PhotonTracerGpu::~PhotonTracerGpu() {
 
 void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
                             const RefractionVolumesGpu& refraction, const PhotonSettings& settings,
-                            GpuStageTimer* timer) {
+                            GpuStageTimer* timer, bool dispersion) {
     // The same derived settings as traceLightPhotonsCpu.
     PhotonResultCpu host;
     const PhotonPlan plan = planPhotons(setup, settings);
     host.resolution = plan.resolution;
     const size_t voxels = plan.voxels;
     const size_t photonCount = plan.photons;
-    if (photonCount > photonCapacity_ || !photons_) {
-        resizeBuffer(photons_, photonCount * sizeof(shared::GpuPhoton));
-        resizeBuffer(rounds_, (EK_ROUND_HEADER + 2 * photonCount) * sizeof(GLuint));
-        resizeBuffer(extinguished_, photonCount * sizeof(glm::vec4));
-        photonCapacity_ = photonCount;
+    // Under dispersion one pass per channel, each through its channel's ∇n volume.
+    const int passes = photonPassCount(dispersion);
+    unsigned passGradients[3] = {refraction.gradientTexture(), 0u, 0u};
+    if (dispersion) {
+        for (int c = 0; c < 3; ++c) passGradients[c] = refraction.channelGradientTexture(c);
+        if (!passGradients[0] || !passGradients[2])
+            throw Error("photon tracing",
+                        "dispersion needs the red and blue channels' gradient volumes");
+    }
+    // Every pass's photons keep their slots (download() returns them all, as the twin does); the
+    // round lists hold one pass's indices at a time.
+    const size_t slots = photonCount * size_t(passes);
+    if (slots > photonCapacity_ || !photons_) {
+        resizeBuffer(photons_, slots * sizeof(shared::GpuPhoton));
+        resizeBuffer(rounds_, (EK_ROUND_HEADER + 2 * photonCount * passes) * sizeof(GLuint));
+        resizeBuffer(extinguished_, slots * sizeof(glm::vec4));
+        photonCapacity_ = slots;
     }
     if (voxels > voxelCapacity_ || !deposits_) {
         resizeBuffer(deposits_, voxels * kDepositChannels * 2 * sizeof(GLuint));
@@ -131,8 +143,6 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
 
     if (timer) timer->begin("photons");
     fields.bind();
-    glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
-    glBindTexture(GL_TEXTURE_3D, refraction.gradientTexture());
     glActiveTexture(GL_TEXTURE0 + EK_UNIT_OCTREE);
     glBindTexture(GL_TEXTURE_3D, refraction.octreeTexture());
     glActiveTexture(GL_TEXTURE0);
@@ -142,8 +152,33 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_DEPOSITS, receiverDeposits_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_ROUNDS, rounds_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_EXTINGUISHED, extinguished_);
+    clearBuffer(deposits_);
+    clearBuffer(totals_);
+    clearBuffer(receiverDeposits_);
+    clearBuffer(rounds_);  // EK_ROUND_MARCHED counts over every pass
 
-    // Step 4: generate every light's photons, in the layouts the plan chose on the host.
+    int64_t tracedPerPass = 0;
+    for (int pass = 0; pass < passes; ++pass) {
+        glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
+        glBindTexture(GL_TEXTURE_3D, passGradients[pass]);
+        glActiveTexture(GL_TEXTURE0);
+        const size_t base = size_t(pass) * photonCount;
+        generatePass(plan, settings, base);
+        if (pass == 0) {
+            tracedPerPass = setScales(setup, plan, host);
+            host.photonsTraced = tracedPerPass * passes;
+        }
+        marchPass(plan, settings, host, tracedPerPass, base, photonPassChannels(pass, passes));
+    }
+    if (timer) timer->end();
+
+    host.photons.resize(slots);  // filled by download()
+    host_ = std::move(host);
+    params_ = setup.params;
+}
+
+void PhotonTracerGpu::generatePass(const PhotonPlan& plan, const PhotonSettings& settings,
+                                   size_t base) {
     generate_->use();
     generate_->setInt("photonsPerSide", plan.side);
     generate_->setUint("seed", settings.seed);
@@ -152,22 +187,26 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     for (const PhotonLightPlan& light : plan.lights) {
         generate_->setInt("lightIndex", light.light);
         generate_->setInt("lightGrid", light.grid);
-        generate_->setInt("photonOffset", int(light.first));
+        generate_->setInt("photonOffset", int(base + light.first));
         dispatchPhotons(*generate_, light.count);
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+}
 
+int64_t PhotonTracerGpu::setScales(const ViewSetup& setup, const PhotonPlan& plan,
+                                   PhotonResultCpu& host) {
     // The emitted power sets the scales before anything is deposited; it is summed here in the
     // CPU twin's order (index order, in double), which a GPU reduction would not reproduce.
     const std::vector<shared::GpuPhoton> started =
-        readBuffer<shared::GpuPhoton>(photons_, photonCount);
+        readBuffer<shared::GpuPhoton>(photons_, plan.photons);
     warnLightsMissingVolume(setup, plan.lights, [&](size_t i) {
         return int(started[i].position.w) == EK_PHOTON_ACTIVE;
     });
+    int64_t traced = 0;
     for (const shared::GpuPhoton& p : started) {
         if (int(p.position.w) != EK_PHOTON_ACTIVE) continue;
         host.totals.emitted += glm::dvec3(glm::vec3(p.flux));
-        ++host.photonsTraced;
+        ++traced;
     }
     shared::VolumeAccessCpu volume{setup.params};  // for the shared volumeVoxelSize()
     const glm::vec3 h = volume.volumeVoxelSize();
@@ -177,36 +216,41 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
                                       fixedPointScaleFor(emitted.y, smallestVoxel),
                                       fixedPointScaleFor(emitted.z, smallestVoxel),
                                       fixedPointScaleFor(rec709Luminance(emitted), smallestVoxel));
-    const glm::dvec3 totalScale(fixedPointScaleFor(emitted.x, 1.0),
-                                fixedPointScaleFor(emitted.y, 1.0),
-                                fixedPointScaleFor(emitted.z, 1.0));
+    return traced;
+}
 
-    // Step 5: the march in rounds (PhotonSettings::stepsPerRound). Round 0 covers every photon
-    // by a direct dispatch; each later one only the photons the round before appended to its
-    // list, by an indirect dispatch whose arguments photon_round.comp wrote (shared/
+void PhotonTracerGpu::marchPass(const PhotonPlan& plan, const PhotonSettings& settings,
+                                const PhotonResultCpu& host, int64_t traced, size_t base,
+                                glm::vec3 channels) {
+    // The march in rounds (PhotonSettings::stepsPerRound). Round 0 covers every photon of the
+    // pass by a direct dispatch; each later one only the photons the round before appended to
+    // its list, by an indirect dispatch whose arguments photon_round.comp wrote (shared/
     // photon_rounds.h). The header starts with round 0's count, the photons traced, so that it
-    // counts as a round with photons, as in the CPU twin.
-    clearBuffer(deposits_);
-    clearBuffer(totals_);
-    clearBuffer(receiverDeposits_);
-    GLuint header[EK_ROUND_HEADER] = {};
+    // counts as a round with photons, as in the CPU twin; EK_ROUND_MARCHED is kept from the
+    // passes before.
+    GLuint header[EK_ROUND_MARCHED] = {};
     header[EK_ROUND_ARGS + 1] = header[EK_ROUND_ARGS + 2] = 1;
-    header[EK_ROUND_COUNT] = GLuint(host.photonsTraced);
+    header[EK_ROUND_COUNT] = GLuint(traced);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, rounds_);
     glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(header), header);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    const glm::dvec3& emitted = host.totals.emitted;
+    const glm::dvec3 totalScale(fixedPointScaleFor(emitted.x, 1.0),
+                                fixedPointScaleFor(emitted.y, 1.0),
+                                fixedPointScaleFor(emitted.z, 1.0));
     trace_->use();
     trace_->setFloat("minStep", plan.minStep);
     trace_->setInt("integrator", static_cast<int>(settings.integrator));
-    trace_->setInt("listCapacity", int(photonCount));
+    trace_->setInt("listCapacity", int(plan.photons));
+    glUniform3f(trace_->uniformLocation("photonChannels"), channels.x, channels.y, channels.z);
     const glm::dvec4& s = host.fixedPointScale;
     glUniform4d(trace_->uniformLocation("depositScale"), s.x, s.y, s.z, s.w);
     glUniform3d(trace_->uniformLocation("totalScale"), totalScale.x, totalScale.y, totalScale.z);
     round_->use();
-    round_->setUint("stopCount", GLuint(photonStopCount(plan, host.photonsTraced)));
+    round_->setUint("stopCount", GLuint(photonStopCount(plan, traced)));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, rounds_);
-    for (int round = 0; round < plan.rounds && host.photonsTraced > 0; ++round) {
+    for (int round = 0; round < plan.rounds && traced > 0; ++round) {
         const int listIn = round & 1;
         trace_->use();
         trace_->setInt("roundSteps", photonRoundSteps(plan, round));
@@ -214,7 +258,7 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
         trace_->setInt("fromList", round > 0);
         trace_->setInt("listIn", listIn);
         if (round == 0) {
-            dispatchPhotons(*trace_, photonCount);
+            dispatchPhotons(*trace_, plan.photons, base);
         } else {
             glDispatchComputeIndirect(0);
         }
@@ -230,11 +274,6 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    if (timer) timer->end();
-
-    host.photons.resize(photonCount);  // filled by download()
-    host_ = std::move(host);
-    params_ = setup.params;
 }
 
 std::vector<glm::vec4> PhotonTracerGpu::receiverMap() const {

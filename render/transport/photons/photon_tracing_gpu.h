@@ -29,10 +29,11 @@ public:
     // photons back once (the emitted power sets the fixed-point scales before anything is
     // deposited, as in the CPU twin), then marches them in rounds with the active photons compacted
     // on the GPU (shared/photon_rounds.h) without reading anything back; the results stay on the
-    // GPU until download(). Timer stage: "photons".
+    // GPU until download(). With `dispersion` (refraction's red and blue ∇n volumes computed),
+    // one pass per colour channel, as the CPU twin (photonPassCount). Timer stage: "photons".
     void trace(const ViewSetup& setup, VolumeTextures& fields,
                const RefractionVolumesGpu& refraction, const PhotonSettings& settings = {},
-               GpuStageTimer* timer = nullptr);
+               GpuStageTimer* timer = nullptr, bool dispersion = false);
 
     // The last trace's results, in the CPU twin's structure and units.
     PhotonResultCpu download() const;
@@ -53,15 +54,26 @@ public:
     const glm::dvec4& fixedPointScale() const { return host_.fixedPointScale; }
 
 private:
+    // Step 4 for one pass: every light's photons into slots base .. base + plan.photons − 1.
+    void generatePass(const PhotonPlan& plan, const PhotonSettings& settings, size_t base);
+    // After the first pass's generation: reads its photons back, warns of lights that miss the
+    // volume, sums the emitted power into host (in the twin's order) and sets the fixed-point
+    // scales from it. Returns the photons that entered the box.
+    int64_t setScales(const ViewSetup& setup, const PhotonPlan& plan, PhotonResultCpu& host);
+    // Step 5 for one pass: the march in rounds of the photons in slots base .., depositing the
+    // channels `channels`.
+    void marchPass(const PhotonPlan& plan, const PhotonSettings& settings,
+                   const PhotonResultCpu& host, int64_t traced, size_t base, glm::vec3 channels);
+
     std::unique_ptr<ShaderProgram> generate_;
     std::unique_ptr<ShaderProgram> trace_;
     std::unique_ptr<ShaderProgram> round_;  // between rounds (shaders/photon_round.comp)
-    unsigned photons_ = 0;                  // SSBO: shared::GpuPhoton per photon
-    unsigned deposits_ = 0;                 // SSBO: 6 int64 (low, high uint words) per voxel
-    unsigned totals_ = 0;                   // SSBO: 14 int64, see shaders/photon_trace.comp
+    unsigned photons_ = 0;           // SSBO: shared::GpuPhoton per photon and pass (dispersion: 3)
+    unsigned deposits_ = 0;          // SSBO: 6 int64 (low, high uint words) per voxel
+    unsigned totals_ = 0;            // SSBO: 14 int64, see shaders/photon_trace.comp
     unsigned receiverDeposits_ = 0;  // SSBO: 3 int64 (low, high words) per receiver map texel
     unsigned rounds_ = 0;            // SSBO and indirect arguments: round header, 2 index lists
-    unsigned extinguished_ = 0;      // SSBO: vec4 per photon, its extinction so far
+    unsigned extinguished_ = 0;      // SSBO: vec4 per photon and pass, its extinction so far
     size_t photonCapacity_ = 0;
     size_t voxelCapacity_ = 0;
     size_t receiverCapacity_ = 0;

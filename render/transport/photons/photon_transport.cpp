@@ -61,6 +61,7 @@ TransportNeeds PhotonTransport::needs() const {
     // only shorten steps the octree already cut at a node's face).
     n.octreeSettings.minStepVoxels = settings_.trace.minStepVoxels;
     n.octreeSettings.stepLimitVoxels = settings_.maxStepVoxels;
+    n.dispersion = true;  // one pass of the photons per channel (photon_tracing.h)
     return n;
 }
 
@@ -69,12 +70,15 @@ void PhotonTransport::configure(const Scene& scene, ViewSetup& setup) {
     // Photons matter where something scatters them toward the camera, or a receiver shows them;
     // every light type emits photons (shaders/shared/photons.h).
     if (!lightAllThroughFluence(scene, setup)) return;
-    // Every photon of every light is in memory at once (GPU records and their read-back).
+    // Every photon of every light is in memory at once (GPU records and their read-back), under
+    // dispersion once per colour channel (photonPassCount).
     const PhotonPlan plan = planPhotons(setup, traceSettings());
+    const double passes = photonPassCount(shared::curvedRays(setup.params) && dispersesView(setup));
     checkMemory(settings_.where.empty() ? scene.path + ":/render/light_transport" : settings_.where,
-                double(plan.photons) * kPhotonBytes,
+                double(plan.photons) * passes * kPhotonBytes,
                 std::to_string(plan.photons) + " photons (" +
-                    std::to_string(settings_.trace.photonsPerSide) + " per side)",
+                    std::to_string(settings_.trace.photonsPerSide) + " per side)" +
+                    (passes > 1 ? " in each of 3 colour channels" : ""),
                 "lower per_side");
 }
 
@@ -97,18 +101,21 @@ std::vector<unsigned char> PhotonTransport::cacheKey(
     appendBytes(key, &trace, sizeof(trace));
     appendBytes(key, &settings_.kappaTolerance, sizeof(settings_.kappaTolerance));
     appendBytes(key, &settings_.maxStepVoxels, sizeof(settings_.maxStepVoxels));
+    // Each channel's photons bend with its own n under dispersion.
+    for (const glm::vec3& slopes : setup.channelIndexSlopes)
+        appendBytes(key, &slopes, sizeof(slopes));
     return key;
 }
 
 void PhotonTransport::runCpu(const TransportInputsCpu& in) {
     StageScope stage(in.timer, "photons");
-    cpu_ =
-        computePhotonRadianceCpu(in.setup, in.slotGrids, in.gradient, in.octree, traceSettings());
+    cpu_ = computePhotonRadianceCpu(in.setup, in.slotGrids, in.gradient, in.octree, traceSettings(),
+                                    in.channelGradients);
 }
 
 void PhotonTransport::runGpu(const TransportInputsGpu& in) {
     if (!gpu_) gpu_ = std::make_unique<PhotonRadianceGpu>(device_.exactMath);
-    gpu_->compute(in.setup, in.fields, in.refraction, traceSettings(), in.timer);
+    gpu_->compute(in.setup, in.fields, in.refraction, traceSettings(), in.timer, in.dispersion);
 }
 
 TransportOutputCpu PhotonTransport::outputCpu() const {
