@@ -3,7 +3,6 @@
 #include <cstdlib>
 
 #include "core/camera.h"
-#include "core/log.h"
 #include "core/resample.h"
 #include "core/transfer_function.h"
 #include "render/environment_map.h"
@@ -247,15 +246,6 @@ Image FrameRenderer::render(int frame) {
                                                     timer_.get());
         if (transportChanged)
             transport_->runGpu({setup, *textures_, *refractionGpu_, timer_.get(), disperses});
-    }
-    // Only a method that bends light (reads ∇n) misses dispersion; straight light has none.
-    if (transportChanged && disperses && needs.gradient && !needs.dispersion &&
-        !warnedDispersion_) {
-        logWarning("render.light_transport: the \"" + transport_->name() +
-                   "\" method carries light along the green channel's index in every channel: "
-                   "view rays disperse, its caustics do not (\"method\": \"photons\" or "
-                   "\"wavefront\" disperse both)");
-        warnedDispersion_ = true;  // once per renderer, not every frame
     }
     if (transportChanged) {
         lastTransportStats_ = transport_->stats();

@@ -133,7 +133,6 @@ private:
     std::unique_ptr<RefractionVolumesGpu> refractionGpu_;
     std::vector<glm::vec4> gradientCpu_;
     ChannelGradientsCpu channelGradientsCpu_;  // dispersion's red and blue ∇n volumes
-    bool warnedDispersion_ = false;            // that the method in use does not disperse its light
     std::vector<glm::vec4> octreeCpu_;
     TransportDevice device_;
     std::unique_ptr<LightTransport> transport_;

@@ -46,9 +46,9 @@ struct TransportNeeds {
     bool gradient = false;  // the ∇n volume (xyz = ∇n, w = n)
     bool octree = false;    // the octree over n (and over κ with octree.kappaTolerance > 0)
     OctreeSettings octreeSettings;
-    // Under dispersion its light bends with each colour channel's own n (it reads
-    // TransportInputsCpu::channelGradients); otherwise with the green channel's in all three.
-    bool dispersion = false;
+    // Under dispersion (dispersesView) a method that reads ∇n bends each colour channel's light
+    // with that channel's own n: it reads TransportInputsCpu::channelGradients, or the GPU's
+    // (TransportInputsGpu::dispersion), which the frame renderer computes for such scenes.
 };
 
 // Counters of the last run, for --stats and tests; zero where a method has no such thing.

@@ -22,6 +22,10 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "volume_bindings.glsl"
 #include "fixed_point.glsl"
 
+// The colour channels the sources send (plane_sweep.h): (1, 1, 1), or under dispersion one
+// channel's 1 per pass, the pass bending through that channel's ∇n volume.
+uniform vec3 sweepChannels;
+
 // The hooks plane_sweep.h calls, declared before it and defined after.
 vec4 fetchSweepLight(ivec2 texel);
 vec4 fetchSweepDirection(ivec2 texel);

@@ -41,6 +41,13 @@
 //   vec4 fetchSweepTrace(ivec2 texel)      this plane's back-traced points (sweepBackTrace)
 //   void depositSweepReceiver(int mapTexel, vec3 power)  adds power to a receiver map texel
 //                                          (fixed point on both sides: any order, same sums)
+//   vec3 sweepChannels                     the colour channels the light sources send (1 each;
+//                                          under dispersion one channel's 1 per pass, the pass
+//                                          bending through that channel's ∇n volume:
+//                                          render/transport/channel_passes.h). Every step after
+//                                          the source is channel by channel, so the other
+//                                          channels stay 0 and the kept one is, bit for bit,
+//                                          the sweep of that channel's n.
 //
 // The GPU runs it in shaders/plane_sweep.comp, a dispatch per pass and plane
 // (render/transport/plane_sweep/plane_sweep_gpu.cpp).
@@ -94,7 +101,8 @@ void sweepSourceLight(GpuPlaneSweep s, vec3 q, EK_OUT(vec3) light, EK_OUT(vec3) 
     const vec3 irradiance = lightIrradiance(s.plane.x, x, toLight, distance);
     const float cosine = -float(s.axes.w) * toLight[s.axes.x];
     v = -toLight * gradientAt(x).w;
-    light = cosine > 0.0f ? irradiance * cosine : vec3(0.0f);
+    // The mask last: × 1 keeps the bits of a sweep without dispersion.
+    light = cosine > 0.0f ? irradiance * cosine * sweepChannels : vec3(0.0f);
 }
 
 // One tap of the previous plane: the buffer's texel, or the source's light outside it.

@@ -14,32 +14,23 @@
 #include "render/gl_context.h"
 #include "render/refraction_volume.h"
 #include "render/transport/photons/photon_tracing.h"
+#include "support/dispersive_prism.h"
 #include "support/photon_gpu_compare.h"
-#include "support/photon_scene.h"
 
 using namespace eikon;
 using eikon::test::PhotonScene;
 
 namespace {
 
-constexpr float kIor = 1.5f;    // n_d
-constexpr float kAbbe = 20.0f;  // a dense flint's dispersion, strong on purpose
-constexpr float kRise = 0.3f;   // the field is 1 + kRise·y: n_c(y) = n_c + kRise·(n_c − 1)·y
+using eikon::test::kPrismAbbe;
+using eikon::test::kPrismIor;
+using eikon::test::kPrismRise;
 
-// Light along +x through the whole box [-1, 1]³ filled with the graded medium (no surface),
-// slightly red-heavy so that a channel's deposits cannot pass for another's.
-struct Prism {
-    PhotonScene s;
-    ChannelGradientsCpu channels;
+// The prism's photons, 24² of them, quarter-voxel steps at least.
+struct Prism : eikon::test::DispersivePrism {
     PhotonSettings settings;
 
-    explicit Prism(float abbe, float ior = kIor)
-        : s(
-              32, ior, glm::vec3(0.2f, 0.3f, 0.5f), glm::vec3(1.0f, 0.0f, 0.0f),
-              [](glm::vec3 p) { return 1.0f + kRise * p.y; }, glm::vec3(1.0f, 0.8f, 0.6f)) {
-        s.scene.materials[0].abbe = abbe;
-        s.markGraded();
-        channels = computeChannelGradientsCpu(s.setup, {&s.field});
+    explicit Prism(float abbe, float ior = kPrismIor) : DispersivePrism(abbe, ior) {
         settings.photonsPerSide = 24;
         settings.minStepVoxels = 0.25f;
     }
@@ -59,15 +50,15 @@ TEST_CASE(
     "photon dispersion: each channel's photons bend by the closed form of a linear index "
     "gradient with its own n, as the photons of a glass of that n",
     "[photons][dispersion]") {
-    const Prism prism(kAbbe);
+    const Prism prism(kPrismAbbe);
     REQUIRE(dispersesView(prism.s.setup));
     const PhotonResultCpu result = prism.trace();
     const size_t perPass = result.photons.size() / 3;
     REQUIRE(result.photons.size() == 3 * perPass);
-    const glm::vec3 n = channelIndices(kIor, kAbbe);
+    const glm::vec3 n = channelIndices(kPrismIor, kPrismAbbe);
     // Rays move up by about 0.2 across the box. A ray keeps v_x = n(y0), its entry height's index
     // (∂n/∂x = 0), and crosses the box's 2 units of x with tan θ = sinh(g_c·2/n(y0)), g_c =
-    // kRise·(n_c − 1): v_y = v_x·that.
+    // kPrismRise·(n_c − 1): v_y = v_x·that.
     double worst = 0.0;
     int photons[3] = {0, 0, 0};
     double meanSlope[3] = {0.0, 0.0, 0.0};
@@ -80,7 +71,7 @@ TEST_CASE(
         // Left through the far face, having entered above the bottom face's last half voxel (where
         // n is sampled clamped to the voxel centres, flat: those rays bend late, by up to 8e-4).
         if (x.x < 0.999f || x.y < -0.7f || x.y > 0.8f) continue;
-        const double g = kRise * (double(n[c]) - 1.0);
+        const double g = kPrismRise * (double(n[c]) - 1.0);
         const double expected = double(v.x) * std::sinh(g * 2.0 / double(v.x));
         worst = std::max(worst, std::abs(double(v.y) - expected));
         ++photons[c];
@@ -136,19 +127,14 @@ TEST_CASE("photon dispersion with the same n in every channel: three passes depo
     CHECK(three.totals.dropped == one.totals.dropped);
     // The mean direction sums each channel's luminance share on its own, rounding three times
     // where one pass rounds once: within a few quanta of 2^-40.
-    double worst = 0.0, largest = 0.0;
-    for (size_t i = 0; i < one.direction.size(); ++i)
-        for (int k = 0; k < 3; ++k) {
-            worst = std::max(worst, double(std::abs(three.direction[i][k] - one.direction[i][k])));
-            largest = std::max(largest, double(std::abs(one.direction[i][k])));
-        }
-    INFO("direction: max |difference| " << worst << " of " << largest);
-    CHECK(worst <= 1e-6 * largest);
+    const double difference = eikon::test::relativeVolumeDifference(three.direction, one.direction);
+    INFO("direction: max |difference| / max |value| " << difference);
+    CHECK(difference <= 1e-6);
 }
 
 TEST_CASE("GPU photon dispersion equals the CPU twin", "[photons][dispersion][gpu]") {
     auto context = createHeadlessContext();
-    const Prism prism(kAbbe);
+    const Prism prism(kPrismAbbe);
     eikon::test::GpuRun gpu;
     gpu.textures.update({&prism.s.field});
     gpu.params.upload(prism.s.setup.params);

@@ -127,10 +127,8 @@ std::vector<PhotonLightPlan> planLightGrids(const ViewSetup& setup, int side, si
 // without dispersion of index n_c gives. The three passes share one set of fixed-point sums and
 // scales (those of one pass carrying all three), so with equal n in every channel they deposit
 // the plain trace's power·length bytes; the luminance-weighted direction, summed per channel,
-// rounds differently (within a quantum per pass). Three times the steps and the time.
-int photonPassCount(bool dispersion);
-// The channels pass `pass` of `passes` deposits: (1, 1, 1) alone, else red, green, blue.
-glm::vec3 photonPassChannels(int pass, int passes);
+// rounds differently (within a quantum per pass). Three times the steps and the time. The passes
+// and their masks: render/transport/channel_passes.h.
 
 // Steps every active photon takes in round `round` (from 0) of plan: stepsPerRound, less in a
 // last round that reaches maxSteps. Every photon still active after a round has taken all of its
@@ -151,7 +149,7 @@ std::vector<shared::GpuPhoton> generatePhotonsCpu(const ViewSetup& setup,
 // Traces the photons of every light of setup (PhotonPlan) through the media: slotGrids are the
 // field volumes (as for computeIndexGradientCpu), gradient and octree the refraction volumes.
 // With channelGradients (the red and blue ∇n volumes, `gradient` the green one's) and a setup
-// that disperses (dispersesView), one pass per colour channel (photonPassCount).
+// that disperses (dispersesView), one pass per colour channel (channelPassCount).
 PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
                                      const std::vector<const DenseGrid*>& slotGrids,
                                      const RefractionVolumeCpu& gradient,

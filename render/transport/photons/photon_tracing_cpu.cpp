@@ -8,8 +8,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "core/error.h"
-
+#include "render/transport/channel_passes.h"
 #include "render/transport/photons/fixed_deposits_cpu.h"
 #include "render/transport/photons/lights_missing_volume.h"
 #include "render/transport/photons/photon_tracing.h"
@@ -55,17 +54,6 @@ PhotonPlan planPhotons(const ViewSetup& setup, const PhotonSettings& settings) {
     return plan;
 }
 
-int photonPassCount(bool dispersion) {
-    return dispersion ? 3 : 1;
-}
-
-glm::vec3 photonPassChannels(int pass, int passes) {
-    if (passes == 1) return glm::vec3(1.0f);
-    glm::vec3 channels(0.0f);
-    channels[pass] = 1.0f;
-    return channels;
-}
-
 int photonRoundSteps(const PhotonPlan& plan, int round) {
     return std::min(plan.stepsPerRound, plan.maxSteps - round * plan.stepsPerRound);
 }
@@ -95,17 +83,6 @@ std::vector<shared::GpuPhoton> generatePhotonsCpu(const ViewSetup& setup,
 }
 
 namespace {
-
-// Under dispersion (photonPassCount): the ∇n volume each pass bends through, red, green, blue.
-std::vector<const RefractionVolumeCpu*> passGradients(const ViewSetup& setup,
-                                                      const RefractionVolumeCpu& gradient,
-                                                      const ChannelGradientsCpu* channelGradients) {
-    if (!channelGradients || !dispersesView(setup)) return {&gradient};
-    if (channelGradients->red.size() != gradient.size() ||
-        channelGradients->blue.size() != gradient.size())
-        throw Error("photons", "dispersion needs the red and blue channels' gradient volumes");
-    return {&channelGradients->red, &gradient, &channelGradients->blue};
-}
 
 // Step 5 for one pass: the march in rounds (PhotonSettings::stepsPerRound), as on the GPU: each
 // round marches the active photons by one task per photon, then the ones still active are
@@ -172,7 +149,7 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
     for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
     kernel.octree = octree.data();
     const std::vector<const RefractionVolumeCpu*> gradients =
-        passGradients(setup, gradient, channelGradients);
+        channelPassGradientsCpu(setup, gradient, channelGradients, "photons");
     const int passes = int(gradients.size());
 
     PhotonResultCpu result;
@@ -200,7 +177,7 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
 
     for (int pass = 0; pass < passes; ++pass) {
         kernel.gradient = gradients[pass]->data();
-        kernel.photonChannels = photonPassChannels(pass, passes);
+        kernel.photonChannels = channelPassMask(pass, passes);
         // Each channel's photons start with its own n (v = n·d).
         if (pass > 0 || gradients[pass] != &gradient)
             photons = generatePhotonsCpu(setup, *gradients[pass], settings);

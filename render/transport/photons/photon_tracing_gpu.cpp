@@ -9,6 +9,7 @@
 #include "render/gpu_timer.h"
 #include "render/receiver_map.h"
 #include "render/shader_program.h"
+#include "render/transport/channel_passes.h"
 #include "render/transport/fixed_point.h"
 #include "render/transport/photons/lights_missing_volume.h"
 #include "render/transport/photons/photon_tracing_gpu.h"
@@ -110,14 +111,9 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     const size_t voxels = plan.voxels;
     const size_t photonCount = plan.photons;
     // Under dispersion one pass per channel, each through its channel's ∇n volume.
-    const int passes = photonPassCount(dispersion);
-    unsigned passGradients[3] = {refraction.gradientTexture(), 0u, 0u};
-    if (dispersion) {
-        for (int c = 0; c < 3; ++c) passGradients[c] = refraction.channelGradientTexture(c);
-        if (!passGradients[0] || !passGradients[2])
-            throw Error("photon tracing",
-                        "dispersion needs the red and blue channels' gradient volumes");
-    }
+    const std::vector<unsigned> passGradients =
+        channelPassGradientsGpu(refraction, dispersion, "photon tracing");
+    const int passes = int(passGradients.size());
     // Every pass's photons keep their slots (download() returns them all, as the twin does); the
     // round lists hold one pass's indices at a time.
     const size_t slots = photonCount * size_t(passes);
@@ -168,7 +164,7 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
             tracedPerPass = setScales(setup, plan, host);
             host.photonsTraced = tracedPerPass * passes;
         }
-        marchPass(plan, settings, host, tracedPerPass, base, photonPassChannels(pass, passes));
+        marchPass(plan, settings, host, tracedPerPass, base, channelPassMask(pass, passes));
     }
     if (timer) timer->end();
 

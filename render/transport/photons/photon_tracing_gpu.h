@@ -30,7 +30,7 @@ public:
     // deposited, as in the CPU twin), then marches them in rounds with the active photons compacted
     // on the GPU (shared/photon_rounds.h) without reading anything back; the results stay on the
     // GPU until download(). With `dispersion` (refraction's red and blue ∇n volumes computed),
-    // one pass per colour channel, as the CPU twin (photonPassCount). Timer stage: "photons".
+    // one pass per colour channel, as the CPU twin (channelPassCount). Timer stage: "photons".
     void trace(const ViewSetup& setup, VolumeTextures& fields,
                const RefractionVolumesGpu& refraction, const PhotonSettings& settings = {},
                GpuStageTimer* timer = nullptr, bool dispersion = false);

@@ -5,6 +5,7 @@
 #include "core/memory_limit.h"
 #include "render/input_key.h"
 #include "render/receiver_map.h"
+#include "render/transport/channel_passes.h"
 
 namespace eikon {
 namespace {
@@ -61,7 +62,6 @@ TransportNeeds PhotonTransport::needs() const {
     // only shorten steps the octree already cut at a node's face).
     n.octreeSettings.minStepVoxels = settings_.trace.minStepVoxels;
     n.octreeSettings.stepLimitVoxels = settings_.maxStepVoxels;
-    n.dispersion = true;  // one pass of the photons per channel (photon_tracing.h)
     return n;
 }
 
@@ -71,9 +71,10 @@ void PhotonTransport::configure(const Scene& scene, ViewSetup& setup) {
     // every light type emits photons (shaders/shared/photons.h).
     if (!lightAllThroughFluence(scene, setup)) return;
     // Every photon of every light is in memory at once (GPU records and their read-back), under
-    // dispersion once per colour channel (photonPassCount).
+    // dispersion once per colour channel (channelPassCount).
     const PhotonPlan plan = planPhotons(setup, traceSettings());
-    const double passes = photonPassCount(shared::curvedRays(setup.params) && dispersesView(setup));
+    const double passes =
+        channelPassCount(shared::curvedRays(setup.params) && dispersesView(setup));
     checkMemory(settings_.where.empty() ? scene.path + ":/render/light_transport" : settings_.where,
                 double(plan.photons) * passes * kPhotonBytes,
                 std::to_string(plan.photons) + " photons (" +

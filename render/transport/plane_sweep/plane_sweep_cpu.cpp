@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "render/receiver_map.h"
+#include "render/transport/channel_passes.h"
 #include "render/transport/fixed_point.h"
 #include "render/volume_kernels_cpu.h"
 
@@ -36,6 +37,9 @@ struct PlaneSweepKernelCpu : VolumeAccessCpu {
             receiverSums[size_t(mapTexel) * 3 + size_t(c)].fetch_add(
                 toFixedPoint(power[c], receiverScale), std::memory_order_relaxed);
     }
+
+    // The channels the sources send (plane_sweep.h): all, or one per pass under dispersion.
+    vec3 sweepChannels = vec3(1.0f);
 
     // clang-format off
 #include "shaders/shared/plane_sweep.h"
@@ -246,7 +250,8 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
                                    const std::vector<const DenseGrid*>& slotGrids,
                                    const RefractionVolumeCpu& gradient,
                                    const PlaneSweepSettings& settings,
-                                   const PlaneSweepObserver& observer) {
+                                   const PlaneSweepObserver& observer,
+                                   const ChannelGradientsCpu* channelGradients) {
     const shared::GpuViewParams& p = setup.params;
     const glm::ivec3 res(p.resolution);
     const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
@@ -257,7 +262,9 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
 
     shared::PlaneSweepKernelCpu kernel{{p}};
     for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
-    kernel.gradient = gradient.data();
+    const std::vector<const RefractionVolumeCpu*> gradients =
+        channelPassGradientsCpu(setup, gradient, channelGradients, "plane sweep");
+    const int passes = int(gradients.size());
     // Power gathered by the receivers' map texels, in fixed point (any order, the same sums).
     const size_t receiverSums = 3 * receiverMapTexels(p);
     std::unique_ptr<std::atomic<int64_t>[]> sums(new std::atomic<int64_t>[receiverSums]);
@@ -269,43 +276,47 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
         if (!shared::lightInFluence(p, l)) continue;
         const PlaneSweepPlan plan = planPlaneSweep(setup, l, settings);
         const size_t texels = size_t(plan.size.x) * size_t(plan.size.y);
-        out.texels += int64_t(texels);
-        std::vector<glm::vec4> light(texels), direction(texels), nextLight(texels),
-            nextDirection(texels), trace(texels);
         out.memory.bufferBytes = std::max(out.memory.bufferBytes, 5 * texels * sizeof(glm::vec4));
-
-        for (int j = 0; j < plan.planes; ++j) {
-            const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
-            shared::PlaneSweepKernelCpu k = kernel;
-            k.sweepLight = light.data();
-            k.sweepDirection = direction.data();
-            k.sweepTrace = trace.data();
-            k.planeWidth = plan.size.x;
-            auto rows = [&](auto&& perTexel) {
-                tbb::parallel_for(tbb::blocked_range<int>(0, plan.size.y),
-                                  [&](const tbb::blocked_range<int>& r) {
-                                      for (int b = r.begin(); b != r.end(); ++b)
-                                          for (int a = 0; a < plan.size.x; ++a)
-                                              perTexel(glm::ivec2(a, b),
-                                                       size_t(b) * size_t(plan.size.x) + size_t(a));
-                                  });
-            };
-            rows([&](glm::ivec2 t, size_t i) { trace[i] = k.sweepBackTrace(sweep, t); });
-            rows([&](glm::ivec2 t, size_t i) {
-                k.sweepAdvance(sweep, t, nextLight[i], nextDirection[i]);
-            });
-            if (shared::receiverCount(p) > 0)
+        for (int pass = 0; pass < passes; ++pass) {
+            out.texels += int64_t(texels);
+            kernel.gradient = gradients[pass]->data();
+            kernel.sweepChannels = channelPassMask(pass, passes);
+            std::vector<glm::vec4> light(texels), direction(texels), nextLight(texels),
+                nextDirection(texels), trace(texels);
+            for (int j = 0; j < plan.planes; ++j) {
+                const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
+                shared::PlaneSweepKernelCpu k = kernel;
+                k.sweepLight = light.data();
+                k.sweepDirection = direction.data();
+                k.sweepTrace = trace.data();
+                k.planeWidth = plan.size.x;
+                auto rows = [&](auto&& perTexel) {
+                    tbb::parallel_for(tbb::blocked_range<int>(0, plan.size.y),
+                                      [&](const tbb::blocked_range<int>& r) {
+                                          for (int b = r.begin(); b != r.end(); ++b)
+                                              for (int a = 0; a < plan.size.x; ++a)
+                                                  perTexel(
+                                                      glm::ivec2(a, b),
+                                                      size_t(b) * size_t(plan.size.x) + size_t(a));
+                                      });
+                };
+                rows([&](glm::ivec2 t, size_t i) { trace[i] = k.sweepBackTrace(sweep, t); });
                 rows([&](glm::ivec2 t, size_t i) {
-                    k.sweepStopOnReceivers(sweep, t, nextLight[i]);
+                    k.sweepAdvance(sweep, t, nextLight[i], nextDirection[i]);
                 });
-            light.swap(nextLight);
-            direction.swap(nextDirection);
-            out.texelSteps += int64_t(texels);
-            for (const glm::vec4& tr : trace) out.texelsLost += tr.z > 0.0f ? 0 : 1;
-            const int slice = planeSweepSlice(plan, j);
-            if (slice < 0) continue;
-            depositPlane(sweep, plan, slice, light, direction, k, out);
-            if (observer) observer(l, plan, slice, light, direction);
+                if (shared::receiverCount(p) > 0)
+                    rows([&](glm::ivec2 t, size_t i) {
+                        k.sweepStopOnReceivers(sweep, t, nextLight[i]);
+                    });
+                light.swap(nextLight);
+                direction.swap(nextDirection);
+                out.texelSteps += int64_t(texels);
+                for (const glm::vec4& tr : trace) out.texelsLost += tr.z > 0.0f ? 0 : 1;
+                const int slice = planeSweepSlice(plan, j);
+                if (slice < 0) continue;
+                depositPlane(sweep, plan, slice, light, direction, k, out);
+                if (observer) observer(l, plan, slice, light, direction);
+            }
         }
     }
     std::vector<int64_t> gathered(receiverSums);

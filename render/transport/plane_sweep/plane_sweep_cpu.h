@@ -100,10 +100,15 @@ using PlaneSweepObserver = std::function<void(int lightIndex, const PlaneSweepPl
 
 // Sweeps every light that comes through the fluence (lightInFluence). `gradient` is the ∇n
 // volume (xyz: ∇n, w: n). Receivers stop the light that crosses them (their maps gather it).
+// With channelGradients (the red and blue ∇n volumes) and a setup that disperses, each light is
+// swept once per colour channel, through that channel's volume, its sources sending that channel
+// alone (render/transport/channel_passes.h): three times the texel steps, and the observer sees
+// each pass.
 PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
                                    const std::vector<const DenseGrid*>& slotGrids,
                                    const RefractionVolumeCpu& gradient,
                                    const PlaneSweepSettings& settings,
-                                   const PlaneSweepObserver& observer = {});
+                                   const PlaneSweepObserver& observer = {},
+                                   const ChannelGradientsCpu* channelGradients = nullptr);
 
 }  // namespace eikon

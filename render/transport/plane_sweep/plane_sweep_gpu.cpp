@@ -11,6 +11,7 @@
 #include "render/receiver_map.h"
 #include "render/refraction_volume.h"
 #include "render/shader_program.h"
+#include "render/transport/channel_passes.h"
 #include "render/volume_textures.h"
 #include "shaders/shared/bindings.h"
 
@@ -95,10 +96,47 @@ void PlaneSweepGpu::dispatchPlane(glm::ivec2 size) const {
     barrier();
 }
 
+void PlaneSweepGpu::sweepPass(const ViewSetup& setup, const PlaneSweepPlan& plan,
+                              const PlaneSweepSettings& settings, size_t texels, bool receivers) {
+    bindImage(EK_IMAGE_SWEEP_TRACE, planes_[4], false);
+    int in = 0;  // planes_[in] and planes_[2 + in] hold the previous plane
+    for (int j = 0; j < plan.planes; ++j) {
+        const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
+        program_->setIVec4("sweepAxes", sweep.axes);
+        program_->setIVec4("sweepPlane", sweep.plane);
+        program_->setVec4("sweepPlace", sweep.place);
+        program_->setVec4("sweepLimit", sweep.limit);
+        bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes_[in], false);
+        bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes_[2 + in], false);
+        bindImage(EK_IMAGE_SWEEP_LIGHT_OUT, planes_[1 - in], false);
+        bindImage(EK_IMAGE_SWEEP_DIRECTION_OUT, planes_[3 - in], false);
+        program_->setInt("sweepPass", kPassTrace);
+        dispatchPlane(plan.size);
+        program_->setInt("sweepPass", kPassAdvance);
+        dispatchPlane(plan.size);
+        if (receivers) {
+            program_->setInt("sweepPass", kPassStop);
+            dispatchPlane(plan.size);
+        }
+        in = 1 - in;
+        texelSteps_ += int64_t(texels);
+        const int slice = planeSweepSlice(plan, j);
+        if (slice < 0) continue;
+        bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes_[in], false);
+        bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes_[2 + in], false);
+        program_->setInt("sweepPass", kPassDeposit);
+        program_->setInt("depositSlice", slice);
+        dispatchPlane(plan.size);
+    }
+}
+
 void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
                             const RefractionVolumesGpu& refraction,
-                            const PlaneSweepSettings& settings, GpuStageTimer* timer) {
+                            const PlaneSweepSettings& settings, GpuStageTimer* timer,
+                            bool dispersion) {
     const shared::GpuViewParams& p = setup.params;
+    const std::vector<unsigned> gradients = channelPassGradientsGpu(refraction, dispersion, kWhere);
+    const int passes = int(gradients.size());
     const glm::ivec3 res(p.resolution);
     allocateVolumes(res);
     texels_ = 0;
@@ -108,8 +146,6 @@ void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
 
     if (timer) timer->begin("plane_sweep");
     fields.bind();
-    glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
-    glBindTexture(GL_TEXTURE_3D, refraction.gradientTexture());
     // The volumes written here may not stay bound for sampling.
     for (GLuint unit : {EK_UNIT_FLUENCE, EK_UNIT_FLUENCE_DIRECTION}) {
         glActiveTexture(GL_TEXTURE0 + unit);
@@ -145,37 +181,14 @@ void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
         const PlaneSweepPlan plan = planPlaneSweep(setup, l, settings);
         allocatePlanes(plan.size);
         const size_t texels = size_t(plan.size.x) * size_t(plan.size.y);
-        texels_ += int64_t(texels);
         memory_.bufferBytes = std::max(memory_.bufferBytes, 5 * texels * sizeof(glm::vec4));
-        bindImage(EK_IMAGE_SWEEP_TRACE, planes_[4], false);
-        int in = 0;  // planes_[in] and planes_[2 + in] hold the previous plane
-        for (int j = 0; j < plan.planes; ++j) {
-            const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
-            program_->setIVec4("sweepAxes", sweep.axes);
-            program_->setIVec4("sweepPlane", sweep.plane);
-            program_->setVec4("sweepPlace", sweep.place);
-            program_->setVec4("sweepLimit", sweep.limit);
-            bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes_[in], false);
-            bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes_[2 + in], false);
-            bindImage(EK_IMAGE_SWEEP_LIGHT_OUT, planes_[1 - in], false);
-            bindImage(EK_IMAGE_SWEEP_DIRECTION_OUT, planes_[3 - in], false);
-            program_->setInt("sweepPass", kPassTrace);
-            dispatchPlane(plan.size);
-            program_->setInt("sweepPass", kPassAdvance);
-            dispatchPlane(plan.size);
-            if (receivers) {
-                program_->setInt("sweepPass", kPassStop);
-                dispatchPlane(plan.size);
-            }
-            in = 1 - in;
-            texelSteps_ += int64_t(texels);
-            const int slice = planeSweepSlice(plan, j);
-            if (slice < 0) continue;
-            bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes_[in], false);
-            bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes_[2 + in], false);
-            program_->setInt("sweepPass", kPassDeposit);
-            program_->setInt("depositSlice", slice);
-            dispatchPlane(plan.size);
+        for (int pass = 0; pass < passes; ++pass) {
+            texels_ += int64_t(texels);
+            glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
+            glBindTexture(GL_TEXTURE_3D, gradients[size_t(pass)]);
+            glActiveTexture(GL_TEXTURE0);
+            program_->setVec3("sweepChannels", channelPassMask(pass, passes));
+            sweepPass(setup, plan, settings, texels, receivers);
         }
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |

@@ -30,7 +30,7 @@ public:
     // params bound (TransportInputsGpu), `refraction` holds ∇n.
     void compute(const ViewSetup& setup, VolumeTextures& fields,
                  const RefractionVolumesGpu& refraction, const PlaneSweepSettings& settings,
-                 GpuStageTimer* timer);
+                 GpuStageTimer* timer, bool dispersion = false);
     // The fluence volumes at the output contract's texture units.
     void bind() const;
     // The last run's volumes, receiver map and counters, read back (tests, --stats).
@@ -45,6 +45,9 @@ private:
     void allocateVolumes(glm::ivec3 res);
     void allocatePlanes(glm::ivec2 size);
     void dispatchPlane(glm::ivec2 size) const;
+    // One light's sweep, plane by plane, with the gradient and the channels of its pass bound.
+    void sweepPass(const ViewSetup& setup, const PlaneSweepPlan& plan,
+                   const PlaneSweepSettings& settings, size_t texels, bool receivers);
     std::vector<int64_t> downloadReceiverSums() const;
 
     std::unique_ptr<ShaderProgram> program_;

@@ -42,7 +42,9 @@ PlaneSweepTransport::~PlaneSweepTransport() = default;
 
 TransportNeeds PlaneSweepTransport::needs() const {
     TransportNeeds n;
-    n.gradient = true;  // light bends by Δs ∇n between planes
+    // Light bends by Δs ∇n between planes; under dispersion one sweep per channel
+    // (render/transport/channel_passes.h).
+    n.gradient = true;
     return n;
 }
 
@@ -66,12 +68,16 @@ std::vector<unsigned char> PlaneSweepTransport::cacheKey(
     appendReceiverMapsKey(setup, key);  // receivers stop the light and fill their maps
     static_assert(sizeof(PlaneSweepSettings) == 4 * 4, "PlaneSweepSettings gained padding");
     appendBytes(key, &settings_.sweep, sizeof(settings_.sweep));
+    // Each channel's light bends with its own n under dispersion.
+    for (const glm::vec3& slopes : setup.channelIndexSlopes)
+        appendBytes(key, &slopes, sizeof(slopes));
     return key;
 }
 
 void PlaneSweepTransport::runCpu(const TransportInputsCpu& in) {
     StageScope stage(in.timer, "plane_sweep");
-    result_ = sweepLightsCpu(in.setup, in.slotGrids, in.gradient, settings_.sweep);
+    result_ = sweepLightsCpu(in.setup, in.slotGrids, in.gradient, settings_.sweep, {},
+                             in.channelGradients);
     stats_ = TransportStats{};
     // A texel is the sweep's particle: it takes a step a plane.
     stats_.steps = result_.texelSteps;
@@ -81,7 +87,7 @@ void PlaneSweepTransport::runCpu(const TransportInputsCpu& in) {
 
 void PlaneSweepTransport::runGpu(const TransportInputsGpu& in) {
     if (!gpu_) gpu_ = std::make_unique<PlaneSweepGpu>(device_.exactMath);
-    gpu_->compute(in.setup, in.fields, in.refraction, settings_.sweep, in.timer);
+    gpu_->compute(in.setup, in.fields, in.refraction, settings_.sweep, in.timer, in.dispersion);
     stats_ = TransportStats{};
     stats_.steps = gpu_->texelSteps();
     stats_.particlesTraced = gpu_->texels();

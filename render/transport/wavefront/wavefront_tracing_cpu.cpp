@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
+#include "render/transport/channel_passes.h"
 #include "render/transport/photons/fixed_deposits_cpu.h"
 #include "render/transport/photons/lights_missing_volume.h"
 #include "render/transport/wavefront/wavefront_tracing.h"
@@ -98,12 +99,9 @@ struct WavefrontPass {
 std::vector<WavefrontPass> wavefrontPasses(const ViewSetup& setup,
                                            const RefractionVolumeCpu& gradient,
                                            const ChannelGradientsCpu* channelGradients) {
-    if (!channelGradients || !dispersesView(setup)) return {{setup.params, &gradient}};
-    if (channelGradients->red.size() != gradient.size() ||
-        channelGradients->blue.size() != gradient.size())
-        throw Error("wavefront", "dispersion needs the red and blue channels' gradient volumes");
-    const RefractionVolumeCpu* gradients[3] = {&channelGradients->red, &gradient,
-                                               &channelGradients->blue};
+    const std::vector<const RefractionVolumeCpu*> gradients =
+        channelPassGradientsCpu(setup, gradient, channelGradients, "wavefront");
+    if (gradients.size() == 1) return {{setup.params, &gradient}};
     std::vector<WavefrontPass> passes;
     for (int c = 0; c < 3; ++c) {
         WavefrontPass pass{channelViewParams(setup, c), gradients[c]};

@@ -73,7 +73,6 @@ TransportNeeds WavefrontTransport::needs() const {
     TransportNeeds n;
     n.gradient = true;
     n.octree = false;
-    n.dispersion = true;  // one wavefront per channel (wavefront_tracing.h)
     return n;
 }
 
