@@ -85,7 +85,7 @@ struct PlaneSweepResultCpu {
     // Irradiance (rgb) per receiver map texel (render/receiver_map.h): the light the receivers
     // stopped, gathered on their front faces.
     std::vector<glm::vec4> receiverMap;
-    int64_t texels = 0;      // texels of a plane, summed over the lights swept
+    int64_t texels = 0;      // texels of a plane, summed over the lights (and channels) swept
     int64_t texelSteps = 0;  // texel updates, all planes and lights
     int64_t texelsLost = 0;  // of them, where the light turned within minCosine of the planes
     PlaneSweepMemory memory;
