@@ -2,7 +2,9 @@
 // exposure, [ and ] step frames, Space plays, P saves a screenshot, R resets the view, Esc quits.
 // A camera move reruns only the viewing pass (light volumes and uploads are reused). ARAP handles
 // show as rings: a right click picks one, H selects the next, a right drag moves it and the shape
-// follows (apps/view_handles.h). The loop itself (input, state, render, present) is apps/viewer.h.
+// follows (apps/view_handles.h). A change is rendered at a quarter of the size first and refined
+// to full size while nothing changes (--preview-scale). The loop itself (input, state, render,
+// present) is apps/viewer.h.
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -26,9 +28,11 @@ struct ViewOptions {
     std::string size;
     std::string backend = "auto";
     int exitAfter = 0;  // render this many frames (orbiting 10 degrees each), then quit
+    int previewScale = 4;
     std::string screenshot;
     std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
     bool hold = false;
+    bool play = false;
     bool glDebug = false;
     std::string up;
     std::string grid;
@@ -50,6 +54,8 @@ int runView(const ViewOptions& o) {
     if (o.glDebug) setGlDebugRequested(true);
     ViewerOptions options;
     options.exitAfter = o.exitAfter;
+    options.previewScale = o.previewScale;
+    options.play = o.play;
     options.screenshot = o.screenshot;
     if (!o.drag.empty()) options.drag = parseDrag(o.drag);
     InputChoices choices;
@@ -78,9 +84,17 @@ int runView(const ViewOptions& o) {
         if (!viewer.present()) break;
     }
     const std::string method = renderer.lightTransport().name();
-    std::printf("frames rendered %d, uploads %d, resamples %d, %s runs %d\n",
-                viewer.state().rendered, renderer.uploads(), renderer.resamples(), method.c_str(),
+    const ViewerState& s = viewer.state();
+    std::printf("frames rendered %d, refinements %d, uploads %d, resamples %d, %s runs %d\n",
+                s.frames, s.refinements, renderer.uploads(), renderer.resamples(), method.c_str(),
                 renderer.transportRuns(method));
+    // Means, for benchmarks of a scripted orbit (--exit-after).
+    if (s.frames > 0)
+        std::printf(
+            "frame time: first frame %.1f ms, then %.1f ms a frame at 1/%d size, %.1f ms "
+            "a refinement\n",
+            s.firstMs, s.frames > 1 ? s.framesMs / (s.frames - 1) : 0.0, o.previewScale,
+            s.refinements > 0 ? s.refinementsMs / s.refinements : 0.0);
     return 0;
 }
 
@@ -108,8 +122,15 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "OpenGL)")
         ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
     cmd->add_option("--exit-after", o->exitAfter,
-                    "render this many frames, orbiting 10 degrees each, then quit (for tests)")
+                    "render this many frames, orbiting 10 degrees each, refine the last to full "
+                    "size, then quit (for tests)")
         ->check(CLI::PositiveNumber);
+    cmd->add_flag("--play", o->play, "start playing the frames (as Space does)");
+    cmd->add_option("--preview-scale", o->previewScale,
+                    "render a change at 1/N of the size first (shown enlarged), then refine to "
+                    "full size while nothing changes: 1, 2, 4 (default), 8 or 16; 1: always full "
+                    "size")
+        ->check(CLI::IsMember({1, 2, 4, 8, 16}));
     cmd->add_option("--screenshot", o->screenshot, "with --exit-after: save the last frame here");
     cmd->add_option("--drag", o->drag,
                     "MESH/HANDLE:DX,DY: after the first frame, drag that ARAP handle by DX,DY "

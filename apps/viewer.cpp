@@ -2,11 +2,13 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "core/camera.h"
+#include "render/image_resize.h"
 
 namespace eikon::app {
 namespace {
@@ -26,6 +28,11 @@ std::string statsLine(const std::vector<StageTime>& stages) {
     return line;
 }
 
+// A side of `full` pixels at 1/scale, rounded, at least one pixel.
+int scaledSide(int full, int scale) {
+    return std::max(1, int(std::lround(double(full) / double(scale))));
+}
+
 }  // namespace
 
 Viewer::Viewer(const Scene& scene, SceneDriver& driver, ViewHandles& handles,
@@ -38,6 +45,7 @@ Viewer::Viewer(const Scene& scene, SceneDriver& driver, ViewHandles& handles,
       options_(std::move(options)) {
     state_.frame = scene.time.frameStart;
     state_.exposure = scene.render.exposure;
+    state_.playing = options_.play;
     glfwSetScrollCallback(window_.window(),
                           [](GLFWwindow*, double, double dy) { scrollAccumulated += dy; });
 }
@@ -115,10 +123,12 @@ bool Viewer::input() {
         scrollAccumulated = 0.0;
         s.dirty = true;
     }
-    if (s.playing) ++s.frame, s.dirty = true;
+    // A scripted run (--exit-after) stops moving after its frames, so that the last one refines.
+    const bool scriptDone = options_.exitAfter > 0 && s.frames >= options_.exitAfter;
+    if (s.playing && s.frames > 0 && !scriptDone) ++s.frame, s.dirty = true;
     if (s.frame > scene_.time.frameEnd) s.frame = scene_.time.frameStart;
     if (s.frame < scene_.time.frameStart) s.frame = scene_.time.frameEnd;
-    if (options_.exitAfter > 0 && s.rendered > 0 && s.orbit) {
+    if (options_.exitAfter > 0 && s.frames > 0 && !scriptDone && s.orbit) {
         s.orbit->orbit(0.1745f, 0.0f);
         s.dirty = true;
     }
@@ -127,10 +137,19 @@ bool Viewer::input() {
 
 void Viewer::render() {
     ViewerState& s = state_;
-    const bool scriptedNow = options_.drag && s.rendered == 1;
+    const bool scriptedNow = options_.drag && s.frames == 1;
     if (scriptedNow) s.pendingDrag += options_.drag->pixels, s.dirty = true;
-    if (!s.dirty) return;
-    const int width = scene_.render.width;
+    // A change starts at the preview size; no change refines the last picture, to full size.
+    int scale = 1;
+    if (s.dirty)
+        scale = options_.previewScale;
+    else if (s.scale > 1)
+        scale = s.scale / 2;
+    else
+        return;
+    const int width = scene_.render.width, height = scene_.render.height;
+    // The frame's time counts its simulation step (if any) and a drag's solve with the render.
+    const auto start = std::chrono::steady_clock::now();
     FrameInputs inputs = driver_.frameInputs(s.frame, scene_);
     if (s.orbit) inputs.scene.camera = s.orbit->spec();  // the user's view wins
     if (s.pendingDrag != glm::vec2(0.0f) && s.rendered > 0) {
@@ -139,17 +158,21 @@ void Viewer::render() {
         if (scriptedNow)
             std::printf("before the drag: %s\n",
                         handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
-        const auto start = std::chrono::steady_clock::now();
+        const auto dragStart = std::chrono::steady_clock::now();
         handles_.drag(inputs, camera, width, s.pendingDrag);
         s.dragMs =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - dragStart)
                 .count();
         s.pendingDrag = glm::vec2(0.0f);
     }
-    s.image = renderer_.render(inputs);
-    if (!s.orbit)
-        s.orbit.emplace(scene_.camera, renderer_.volume().bounds, width, scene_.render.height);
-    handles_.locate(cameraOf(renderer_.scene()), width);
+    inputs.scene.render.width = scaledSide(width, scale);
+    inputs.scene.render.height = scaledSide(height, scale);
+    const Image picture = renderer_.render(inputs);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    s.image = resizeBilinear(picture, width, height);
+    if (!s.orbit) s.orbit.emplace(scene_.camera, renderer_.volume().bounds, width, height);
+    handles_.locate(cameraOf(renderer_.scene()), width);  // in the full size's pixels
     if (scriptedNow)
         std::printf("after the drag: %s\n",
                     handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
@@ -162,9 +185,22 @@ void Viewer::render() {
         s.dragMs = -1.0;
     }
     if (scriptedNow) std::printf("the drag's frame: %s\n", stats.c_str());
-    const std::string title = "eikon view - frame " + std::to_string(s.frame) + " - " + stats;
+    char size[64];
+    if (scale == 1)
+        std::snprintf(size, sizeof(size), "full size, %.0f ms", ms);
+    else
+        std::snprintf(size, sizeof(size), "1/%d size, %.0f ms", scale, ms);
+    const std::string title =
+        "eikon view - frame " + std::to_string(s.frame) + " - " + size + " - " + stats;
     glfwSetWindowTitle(window_.window(), title.c_str());
+    if (s.dirty && s.frames == 0)
+        ++s.frames, s.firstMs = ms;
+    else if (s.dirty)
+        ++s.frames, s.framesMs += ms;
+    else
+        ++s.refinements, s.refinementsMs += ms;
     ++s.rendered;
+    s.scale = scale;
     s.dirty = false;
 }
 
@@ -172,7 +208,8 @@ bool Viewer::present() {
     const ViewerState& s = state_;
     const auto fb = window_.framebufferSize();
     display_.draw(s.shown, s.exposure, scene_.render.toneCurve, fb.width, fb.height);
-    const bool last = options_.exitAfter > 0 && s.rendered >= options_.exitAfter;
+    // The last frame is shown once it is refined to full size.
+    const bool last = options_.exitAfter > 0 && s.frames >= options_.exitAfter && s.scale == 1;
     if ((last || s.screenshotAsked) && (!options_.screenshot.empty() || !last)) {
         const std::string path =
             options_.screenshot.empty() ? "eikon_view.png" : options_.screenshot;

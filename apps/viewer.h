@@ -4,6 +4,11 @@
 // scene, the frame or the camera changed; present draws the last picture to the window and
 // saves screenshots. The state lives in one struct, so that what a key does is a change of a
 // field, and what the loop shows follows from the fields.
+// Progressive: a change (the camera, a handle, the frame) is first rendered at 1/previewScale of
+// the window's size in each direction, shown enlarged (render/image_resize.h); while nothing
+// changes, each pass of the loop renders the same picture at twice the size of the last, up to
+// the full size. Light transport does not depend on the picture's size, so the refinements
+// reuse it (photons, light volumes, sweeps): they rerun the viewing pass alone.
 #include <optional>
 #include <string>
 
@@ -28,9 +33,12 @@ struct ScriptedDrag {
 };
 
 struct ViewerOptions {
-    int exitAfter = 0;  // render this many frames (orbiting 10 degrees each), then quit
+    // Render this many frames (orbiting 10 degrees each), refine the last to full size, then quit.
+    int exitAfter = 0;
     std::string screenshot;
     std::optional<ScriptedDrag> drag;
+    int previewScale = 4;  // a power of two; 1: every picture at full size
+    bool play = false;     // start playing the frames, as Space does
 };
 
 // What the user has asked for so far, and what is on screen.
@@ -39,8 +47,15 @@ struct ViewerState {
     float exposure = 0.0f;
     bool dirty = true;  // the picture must be rendered again
     bool playing = false;
-    int rendered = 0;
-    Image image, shown;  // the render, and the render with the handles' markers
+    int frames = 0;       // pictures of a change (at the preview size)
+    int refinements = 0;  // pictures of no change, each at twice the size of the last
+    int rendered = 0;     // both
+    int scale = 1;        // the last picture was rendered at 1/scale of the full size
+    // Times from the frame's inputs (a simulation step, a drag) to its picture: the first frame's
+    // (it loads, resamples and lights the scene), then the sums of the later frames' and of the
+    // refinements'.
+    double firstMs = 0.0, framesMs = 0.0, refinementsMs = 0.0;
+    Image image, shown;  // the render at full size, and with the handles' markers
     std::optional<OrbitCamera> orbit;
     double lastX = 0, lastY = 0;  // the cursor at the last input, window units
     bool orbiting = false, draggingHandle = false;

@@ -17,9 +17,11 @@ using eikon::test::arapBallScene;
 using eikon::test::checkOneLineError;
 using eikon::test::lines;
 using eikon::test::quoted;
+using eikon::test::readFile;
 using eikon::test::runEikon;
 using eikon::test::RunResult;
 using eikon::test::scratchDir;
+using eikon::test::sourcePath;
 using eikon::test::writeFile;
 
 namespace {
@@ -95,4 +97,49 @@ TEST_CASE("a bad --drag fails before the window opens, naming the handles there 
     const RunResult malformed = runEikon("view " + quoted(scene) + " --drag ball/top:5", dir);
     checkOneLineError(malformed, "--drag: ");
     CHECK(malformed.err.find("MESH/HANDLE:DX,DY") != std::string::npos);
+}
+
+// The progressive viewer (apps/viewer.h): a change is rendered at 1/4 of the size and refined while
+// nothing changes. The refined picture is the full-size render's, byte for byte (the window's
+// pixels), and neither the smaller pictures nor the refinements trace the photons again.
+TEST_CASE("eikon view refines a preview to the full-size picture and reuses the photons",
+          "[cli][view][progressive]") {
+#ifndef EIKON_XVFB_RUN
+    WARN("xvfb-run was not found when this test was built: the viewer cannot run");
+#else
+    const std::string dir = scratchDir("cli_view_progressive");
+    const std::string scene = sourcePath("data/scenes/glass_sphere_fog.json");
+    const std::string common = "view " + quoted(scene) + " --size 64x48 --backend cpu";
+    const RunResult progressive =
+        runEikon(common + " --exit-after 2 --screenshot " + quoted(dir + "/progressive.png"), dir,
+                 quoted(EIKON_XVFB_RUN) + " -a");
+    INFO("stdout:\n" << progressive.out << "stderr:\n" << progressive.err);
+    REQUIRE(progressive.exitCode == 0);
+    // Two frames at 16x12, the second refined at 32x24 and 64x48: one photon trace for all four
+    // (and one resample of each of the two fields, the glass and the fog).
+    CHECK(progressive.out.find("frames rendered 2, refinements 2, uploads 0, resamples 2, "
+                               "photons runs 1") != std::string::npos);
+    CHECK(progressive.out.find("ms a frame at 1/4 size, ") != std::string::npos);
+    const RunResult full = runEikon(
+        common + " --exit-after 2 --preview-scale 1 --screenshot " + quoted(dir + "/full.png"), dir,
+        quoted(EIKON_XVFB_RUN) + " -a");
+    INFO("stdout:\n" << full.out << "stderr:\n" << full.err);
+    REQUIRE(full.exitCode == 0);
+    CHECK(
+        full.out.find("frames rendered 2, refinements 0, uploads 0, resamples 2, photons runs 1") !=
+        std::string::npos);
+    CHECK(readFile(dir + "/progressive.png") == readFile(dir + "/full.png"));
+    // Playing a live simulation: every frame is a change (the smoke moved), traced again at the
+    // preview size; the last frame, once the script stops playing, refines without a trace.
+    const RunResult playing =
+        runEikon("view " + quoted(sourcePath("data/scenes/smoke_glass_mesh.json")) +
+                     " --size 32x24 --backend cpu --play --exit-after 3",
+                 dir, quoted(EIKON_XVFB_RUN) + " -a");
+    INFO("stdout:\n" << playing.out << "stderr:\n" << playing.err);
+    REQUIRE(playing.exitCode == 0);
+    CHECK(playing.out.find("frames rendered 3, refinements 2, ") != std::string::npos);
+    CHECK(playing.out.find("photons runs 3") != std::string::npos);
+    // A preview scale that is not a power of two up to 16 is refused in one line.
+    checkOneLineError(runEikon(common + " --preview-scale 3", dir), "view: --preview-scale: ");
+#endif
 }
