@@ -31,6 +31,7 @@ struct ViewOptions {
     int previewScale = 4;
     std::string screenshot;
     std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
+    std::vector<std::string> edits;  // "POINTER=V[,V...]": made after the first frame
     bool hold = false;
     bool play = false;
     bool glDebug = false;
@@ -70,6 +71,7 @@ int runView(const ViewOptions& o) {
     SceneDriver driver(scene);
     ViewHandles handles(driver, scene);
     if (options.drag) handles.select(options.drag->handle);
+    for (const std::string& edit : o.edits) options.edits.add(scene, edit);
     GlfwWindowContext window(scene.render.width, scene.render.height, "eikon view");
     // "auto": the window's GPU unless it is a software rasterizer (see pipeline/backend_choice.h).
     const bool gpu =
@@ -85,9 +87,12 @@ int runView(const ViewOptions& o) {
     }
     const std::string method = renderer.lightTransport().name();
     const ViewerState& s = viewer.state();
-    std::printf("frames rendered %d, refinements %d, uploads %d, resamples %d, %s runs %d\n",
-                s.frames, s.refinements, renderer.uploads(), renderer.resamples(), method.c_str(),
-                renderer.transportRuns(method));
+    std::printf(
+        "frames rendered %d, refinements %d, uploads %d, resamples %d, gradients %d, "
+        "octrees %d, %s runs %d\n",
+        s.frames, s.refinements, renderer.uploads(), renderer.resamples(),
+        renderer.gradientUpdates(), renderer.octreeUpdates(), method.c_str(),
+        renderer.transportRuns(method));
     // Means, for benchmarks of a scripted orbit (--exit-after).
     if (s.frames > 0)
         std::printf(
@@ -125,6 +130,11 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "render this many frames, orbiting 10 degrees each, refine the last to full "
                     "size, then quit (for tests)")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--edit", o->edits,
+                    "POINTER=V[,V,V]: after the first frame, set a light's, material's or clip "
+                    "plane's value (a JSON pointer as keyframe tracks name it, e.g. "
+                    "/lights/0/intensity=2), and print the JSON Patch that keeps it; repeatable "
+                    "(for tests and scripts)");
     cmd->add_flag("--play", o->play, "start playing the frames (as Space does)");
     cmd->add_option("--preview-scale", o->previewScale,
                     "render a change at 1/N of the size first (shown enlarged), then refine to "

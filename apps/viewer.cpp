@@ -139,6 +139,13 @@ void Viewer::render() {
     ViewerState& s = state_;
     const bool scriptedNow = options_.drag && s.frames == 1;
     if (scriptedNow) s.pendingDrag += options_.drag->pixels, s.dirty = true;
+    if (!options_.edits.empty() && s.frames == 1) {
+        for (const ViewEdit& e : options_.edits.edits()) edits_.set(e);
+        options_.edits = ViewEdits{};
+        std::printf("edited; to keep the edits, patch the scene with %s\n",
+                    edits_.jsonPatch().c_str());
+        s.dirty = true;
+    }
     // A change starts at the preview size; no change refines the last picture, to full size.
     int scale = 1;
     if (s.dirty)
@@ -151,6 +158,7 @@ void Viewer::render() {
     // The frame's time counts its simulation step (if any) and a drag's solve with the render.
     const auto start = std::chrono::steady_clock::now();
     FrameInputs inputs = driver_.frameInputs(s.frame, scene_);
+    edits_.apply(inputs.scene);  // over the tracks: the user's edits win, as the view does
     if (s.orbit) inputs.scene.camera = s.orbit->spec();  // the user's view wins
     if (s.pendingDrag != glm::vec2(0.0f) && s.rendered > 0) {
         const CameraFrame camera = cameraOf(inputs.scene);

@@ -15,6 +15,7 @@
 #include <glm/vec2.hpp>
 
 #include "apps/orbit_camera.h"
+#include "apps/view_edits.h"
 #include "apps/view_handles.h"
 #include "pipeline/scene_driver.h"
 #include "render/display_pass.h"
@@ -39,6 +40,7 @@ struct ViewerOptions {
     std::optional<ScriptedDrag> drag;
     int previewScale = 4;  // a power of two; 1: every picture at full size
     bool play = false;     // start playing the frames, as Space does
+    ViewEdits edits;       // --edit: made after the first frame, as a user's would be
 };
 
 // What the user has asked for so far, and what is on screen.
@@ -91,6 +93,7 @@ private:
     GlfwWindowContext& window_;
     FrameRenderer& renderer_;
     ViewerOptions options_;
+    ViewEdits edits_;  // the user's edits so far, written into every frame's scene
     DisplayPass display_;
     ViewerState state_;
     bool keysDown_[349] = {};  // GLFW_KEY_LAST + 1 (checked in viewer.cpp)

@@ -253,7 +253,10 @@ Image FrameRenderer::render(int frame) {
         ++transportRuns_[transport_->name()];
         transportInputs_ = std::move(transportKey);
     }
-    if (octreeChanged) octreeInputs_ = std::move(octreeKey);
+    if (octreeChanged) {
+        octreeInputs_ = std::move(octreeKey);
+        ++octreeUpdates_;
+    }
     if (gradientChanged) {
         gradientInputs_ = std::move(refractionInputs);
         ++gradientUpdates_;

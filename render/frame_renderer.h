@@ -95,6 +95,9 @@ public:
     // How often the ∇n volume was computed: only for scenes with some ior ≠ 1 or a method that
     // needs it, and only when fields, materials' ior or the volume changed.
     int gradientUpdates() const { return gradientUpdates_; }
+    // How often the octree was built: only for a method that needs it, and only when n, κ (the
+    // κ-aware octree), the volume or its settings changed.
+    int octreeUpdates() const { return octreeUpdates_; }
     // How often the environment image was read: once per change of its path.
     int environmentLoads() const;
     // Whether the GPU shaders let the texture unit filter (see useHardwareTrilinear).
@@ -143,6 +146,7 @@ private:
     std::unique_ptr<GpuStageTimer> timer_;
     int resamples_ = 0;
     int gradientUpdates_ = 0;
+    int octreeUpdates_ = 0;
     std::map<std::string, int> transportRuns_;
     int64_t transportSteps_ = 0;
     TransportStats lastTransportStats_;

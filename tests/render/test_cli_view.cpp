@@ -118,16 +118,15 @@ TEST_CASE("eikon view refines a preview to the full-size picture and reuses the 
     // Two frames at 16x12, the second refined at 32x24 and 64x48: one photon trace for all four
     // (and one resample of each of the two fields, the glass and the fog).
     CHECK(progressive.out.find("frames rendered 2, refinements 2, uploads 0, resamples 2, "
-                               "photons runs 1") != std::string::npos);
+                               "gradients 1, octrees 1, photons runs 1") != std::string::npos);
     CHECK(progressive.out.find("ms a frame at 1/4 size, ") != std::string::npos);
     const RunResult full = runEikon(
         common + " --exit-after 2 --preview-scale 1 --screenshot " + quoted(dir + "/full.png"), dir,
         quoted(EIKON_XVFB_RUN) + " -a");
     INFO("stdout:\n" << full.out << "stderr:\n" << full.err);
     REQUIRE(full.exitCode == 0);
-    CHECK(
-        full.out.find("frames rendered 2, refinements 0, uploads 0, resamples 2, photons runs 1") !=
-        std::string::npos);
+    CHECK(full.out.find("frames rendered 2, refinements 0, uploads 0, resamples 2, gradients 1, "
+                        "octrees 1, photons runs 1") != std::string::npos);
     CHECK(readFile(dir + "/progressive.png") == readFile(dir + "/full.png"));
     // Playing a live simulation: every frame is a change (the smoke moved), traced again at the
     // preview size; the last frame, once the script stops playing, refines without a trace.
@@ -139,7 +138,77 @@ TEST_CASE("eikon view refines a preview to the full-size picture and reuses the 
     REQUIRE(playing.exitCode == 0);
     CHECK(playing.out.find("frames rendered 3, refinements 2, ") != std::string::npos);
     CHECK(playing.out.find("photons runs 3") != std::string::npos);
+    CHECK(playing.out.find("octrees 3,") != std::string::npos);  // the smoke's κ moved
     // A preview scale that is not a power of two up to 16 is refused in one line.
     checkOneLineError(runEikon(common + " --preview-scale 3", dir), "view: --preview-scale: ");
 #endif
+}
+
+// Edits (apps/view_edits.h, the relighting panel's path, scripted by --edit): after the first
+// frame a light's intensity reruns the photons alone, a glass's n the ∇n volume, the octree and
+// the photons; the JSON Patch printed keeps the edit: the scene patched so renders the edited
+// picture byte for byte.
+TEST_CASE("eikon view --edit reruns only the stages it touches, and its JSON Patch keeps it",
+          "[cli][view][edit]") {
+#ifndef EIKON_XVFB_RUN
+    WARN("xvfb-run was not found when this test was built: the viewer cannot run");
+#else
+    const std::string dir = scratchDir("cli_view_edit");
+    const std::string scene = sourcePath("data/scenes/glass_sphere_fog.json");
+    const std::string xvfb = quoted(EIKON_XVFB_RUN) + " -a";
+    const std::string common = " --size 64x48 --backend cpu --exit-after 2 --screenshot ";
+    const RunResult light =
+        runEikon("view " + quoted(scene) + common + quoted(dir + "/edited.png") +
+                     " --edit /lights/0/intensity=45",
+                 dir, xvfb);
+    INFO("stdout:\n" << light.out << "stderr:\n" << light.err);
+    REQUIRE(light.exitCode == 0);
+    CHECK(light.out.find("patch the scene with [{\"op\": \"add\", \"path\": "
+                         "\"/lights/0/intensity\", \"value\": 45}]") != std::string::npos);
+    CHECK(light.out.find("gradients 1, octrees 1, photons runs 2") != std::string::npos);
+
+    const RunResult index = runEikon("view " + quoted(scene) + common + quoted(dir + "/index.png") +
+                                         " --edit /materials/1/ior=1.7 --edit /materials/1/ior=1.6",
+                                     dir, xvfb);
+    INFO("stdout:\n" << index.out << "stderr:\n" << index.err);
+    REQUIRE(index.exitCode == 0);
+    // The later edit of one pointer replaces the earlier.
+    CHECK(index.out.find("[{\"op\": \"add\", \"path\": \"/materials/1/ior\", \"value\": 1.6}]") !=
+          std::string::npos);
+    CHECK(index.out.find("gradients 2, octrees 2, photons runs 2") != std::string::npos);
+
+    // The patch applied by hand: the file says 45 where it said 30.
+    std::string text = readFile(scene);
+    const std::string from = "\"intensity\": 30,";
+    REQUIRE(text.find(from) != std::string::npos);
+    text.replace(text.find(from), from.size(), "\"intensity\": 45,");
+    writeFile(dir + "/patched.json", text);
+    const RunResult patched = runEikon(
+        "view " + quoted(dir + "/patched.json") + common + quoted(dir + "/patched.png"), dir, xvfb);
+    REQUIRE(patched.exitCode == 0);
+    CHECK(readFile(dir + "/patched.png") == readFile(dir + "/edited.png"));
+    CHECK(readFile(dir + "/patched.png") != readFile(dir + "/index.png"));
+#endif
+}
+
+TEST_CASE("a bad --edit fails before the window opens, in one line", "[cli][view][edit]") {
+    const std::string dir = scratchDir("cli_view_bad_edit");
+    const std::string scene = quoted(sourcePath("data/scenes/glass_sphere_fog.json"));
+    const struct {
+        const char* edit;
+        const char* says;
+    } cases[] = {
+        {"/lights/0/intensity", "is not POINTER=VALUE"},
+        {"/lights/3/intensity=2", "no lights 3 (the scene has 1)"},
+        {"/camera/position=0,0,5", "the viewer edits lights, materials and clip planes"},
+        {"/lights/0/color=1,1", "takes 3 numbers, not 2"},
+        {"/lights/0/intensity=nan", "not finite numbers"},
+        {"/lights/0/intensity=2x", "not finite numbers"},
+    };
+    for (const auto& c : cases) {
+        const RunResult r = runEikon("view " + scene + " --edit " + quoted(c.edit), dir);
+        INFO(c.edit);
+        checkOneLineError(r, "--edit: ");
+        CHECK(r.err.find(c.says) != std::string::npos);
+    }
 }

@@ -1,0 +1,48 @@
+#pragma once
+// Edits of a scene's lights, materials and clip planes made in `eikon view` (scripted by --edit
+// today): each is a JSON pointer into the scene as written, as keyframe tracks name their targets
+// (core/animation_targets.h), and a value. The viewer writes them into every frame's scene after
+// its tracks, so an edit holds while frames play, and the renderer's stage keys decide what
+// reruns (a light's intensity: the light transport; a material's n: the ∇n volume, the octree
+// and the transport; nothing else). The camera is the mouse's, meshes move by their own tracks
+// and simulations, and both are refused here.
+#include <string>
+#include <vector>
+
+#include "core/animation_targets.h"
+#include "core/scene.h"
+
+namespace eikon::app {
+
+struct ViewEdit {
+    std::string pointer;  // "/lights/0/intensity"
+    AnimationTarget target;
+    std::vector<float> value;  // target.width numbers, as given (writing clamps them)
+};
+
+class ViewEdits {
+public:
+    // Reads "POINTER=V" or "POINTER=V1,V2,V3" against `scene`, and keeps it (replacing an earlier
+    // edit of the same pointer). Throws eikon::Error at "--edit" naming the text and the reason:
+    // no '=', a pointer that does not resolve or that the viewer does not edit, a count of numbers
+    // other than the target's, a number that is not finite.
+    void add(const Scene& scene, const std::string& text);
+    // Keeps an edit already resolved, replacing an earlier one of the same pointer.
+    void set(ViewEdit edit);
+
+    // Writes every edit into `frame` (a frame's scene, its tracks evaluated).
+    void apply(Scene& frame) const;
+
+    const std::vector<ViewEdit>& edits() const { return edits_; }
+    bool empty() const { return edits_.empty(); }
+
+    // The edits as a JSON Patch (RFC 6902) of the scene file, on one line: what keeps them
+    // (Python's jsonpatch, or by hand). Its operations are "add", which replaces a member that is
+    // there and adds one the file left at its default, where "replace" would fail.
+    std::string jsonPatch() const;
+
+private:
+    std::vector<ViewEdit> edits_;
+};
+
+}  // namespace eikon::app
