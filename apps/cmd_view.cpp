@@ -30,6 +30,7 @@ struct ViewOptions {
     int exitAfter = 0;  // render this many frames (orbiting 10 degrees each), then quit
     int previewScale = 4;
     std::string screenshot;
+    std::string panelScreenshot;
     std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
     std::vector<std::string> edits;  // "POINTER=V[,V...]": made after the first frame
     bool hold = false;
@@ -58,6 +59,7 @@ int runView(const ViewOptions& o) {
     options.previewScale = o.previewScale;
     options.play = o.play;
     options.screenshot = o.screenshot;
+    options.panelScreenshot = o.panelScreenshot;
     if (!o.drag.empty()) options.drag = parseDrag(o.drag);
     InputChoices choices;
     choices.size = o.size;
@@ -141,7 +143,10 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "full size while nothing changes: 1, 2, 4 (default), 8 or 16; 1: always full "
                     "size")
         ->check(CLI::IsMember({1, 2, 4, 8, 16}));
-    cmd->add_option("--screenshot", o->screenshot, "with --exit-after: save the last frame here");
+    cmd->add_option("--screenshot", o->screenshot,
+                    "with --exit-after: save the last frame here (the picture alone)");
+    cmd->add_option("--panel-screenshot", o->panelScreenshot,
+                    "with --exit-after: save the window with the panel over the last frame here");
     cmd->add_option("--drag", o->drag,
                     "MESH/HANDLE:DX,DY: after the first frame, drag that ARAP handle by DX,DY "
                     "pixels (y down) as a right drag would, and print where it went (for tests)");

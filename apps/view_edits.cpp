@@ -61,6 +61,26 @@ std::string jsonNumber(float v) {
 
 }  // namespace
 
+std::optional<AnimationTarget> editableTarget(const Scene& scene, const std::string& pointer,
+                                              std::string& why) {
+    std::optional<AnimationTarget> target = resolveAnimationTarget(scene, pointer, why);
+    if (target && !editable(target->kind)) {
+        why =
+            "the viewer edits lights, materials and clip planes (the camera is the mouse's; "
+            "meshes move by their tracks)";
+        target.reset();
+    }
+    return target;
+}
+
+bool ViewEdits::set(const Scene& scene, const std::string& pointer, std::vector<float> value) {
+    std::string why;
+    const std::optional<AnimationTarget> target = editableTarget(scene, pointer, why);
+    if (!target || int(value.size()) != target->width) return false;
+    set(ViewEdit{pointer, *target, std::move(value)});
+    return true;
+}
+
 void ViewEdits::add(const Scene& scene, const std::string& text) {
     const size_t equals = text.find('=');
     if (equals == std::string::npos)
@@ -68,12 +88,8 @@ void ViewEdits::add(const Scene& scene, const std::string& text) {
     ViewEdit edit;
     edit.pointer = text.substr(0, equals);
     std::string why;
-    const std::optional<AnimationTarget> target = resolveAnimationTarget(scene, edit.pointer, why);
+    const std::optional<AnimationTarget> target = editableTarget(scene, edit.pointer, why);
     if (!target) throw Error("--edit", "'" + edit.pointer + "' in " + scene.path + ": " + why);
-    if (!editable(target->kind))
-        throw Error("--edit", "'" + edit.pointer +
-                                  "': the viewer edits lights, materials and clip planes (the "
-                                  "camera is the mouse's; meshes move by their tracks)");
     edit.target = *target;
     if (!parseNumbers(text.substr(equals + 1), edit.value))
         throw Error("--edit",

@@ -6,6 +6,7 @@
 // reruns (a light's intensity: the light transport; a material's n: the ∇n volume, the octree
 // and the transport; nothing else). The camera is the mouse's, meshes move by their own tracks
 // and simulations, and both are refused here.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct ViewEdit {
     std::vector<float> value;  // target.width numbers, as given (writing clamps them)
 };
 
+// The target `pointer` names in `scene` if the viewer edits it; nothing, with `why` set, if not.
+std::optional<AnimationTarget> editableTarget(const Scene& scene, const std::string& pointer,
+                                              std::string& why);
+
 class ViewEdits {
 public:
     // Reads "POINTER=V" or "POINTER=V1,V2,V3" against `scene`, and keeps it (replacing an earlier
@@ -29,6 +34,9 @@ public:
     void add(const Scene& scene, const std::string& text);
     // Keeps an edit already resolved, replacing an earlier one of the same pointer.
     void set(ViewEdit edit);
+    // Keeps `value` for `pointer` (the panel's widgets); false, keeping nothing, for a pointer
+    // editableTarget refuses or a value of the wrong count.
+    bool set(const Scene& scene, const std::string& pointer, std::vector<float> value);
 
     // Writes every edit into `frame` (a frame's scene, its tracks evaluated).
     void apply(Scene& frame) const;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "apps/view_panel.h"
 #include "core/camera.h"
 #include "render/image_resize.h"
 
@@ -48,9 +49,11 @@ Viewer::Viewer(const Scene& scene, SceneDriver& driver, ViewHandles& handles,
     state_.playing = options_.play;
     glfwSetScrollCallback(window_.window(),
                           [](GLFWwindow*, double, double dy) { scrollAccumulated += dy; });
+    overlay_ = std::make_unique<UiOverlay>(window_.window());
 }
 
 Viewer::~Viewer() {
+    overlay_.reset();  // gives the window its callbacks back
     glfwSetScrollCallback(window_.window(), nullptr);
 }
 
@@ -71,11 +74,9 @@ void Viewer::showMarkers() {
     handles_.drawMarkers(state_.shown);
 }
 
-bool Viewer::input() {
+void Viewer::keyShortcuts() {
     ViewerState& s = state_;
-    GLFWwindow* w = window_.window();
-    window_.pollEvents();
-    if (pressed(GLFW_KEY_ESCAPE)) return false;
+    if (pressed(GLFW_KEY_TAB)) s.panel = !s.panel;
     if (pressed(GLFW_KEY_E)) s.exposure += 0.5f;
     if (pressed(GLFW_KEY_Q)) s.exposure -= 0.5f;
     if (pressed(GLFW_KEY_SPACE)) s.playing = !s.playing;
@@ -91,6 +92,22 @@ bool Viewer::input() {
         showMarkers();
     }
     s.screenshotAsked = pressed(GLFW_KEY_P);
+}
+
+bool Viewer::input() {
+    ViewerState& s = state_;
+    GLFWwindow* w = window_.window();
+    window_.pollEvents();
+    if (pressed(GLFW_KEY_ESCAPE)) return false;
+    // What the panel takes (the cursor over it, a field being typed in) the view leaves alone.
+    const bool panelKeys = s.panel && overlay_->wantsKeyboard();
+    const bool panelMouse = s.panel && overlay_->wantsMouse();
+    if (panelKeys) {
+        for (bool& down : keysDown_) down = false;  // no shortcut fires for the panel's typing
+        s.screenshotAsked = false;
+    } else {
+        keyShortcuts();
+    }
     double x = 0, y = 0;
     glfwGetCursorPos(w, &x, &y);
     // The cursor is in window units; the image may be shown larger or smaller.
@@ -99,13 +116,13 @@ bool Viewer::input() {
     const float toImage = windowWidth > 0 ? float(scene_.render.width) / float(windowWidth) : 1.0f;
     const glm::vec2 cursor = toImage * glm::vec2(float(x), float(y));
     const glm::vec2 moved = toImage * glm::vec2(float(x - s.lastX), float(y - s.lastY));
-    const bool left = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    const bool left = !panelMouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
     if (left && s.orbiting && s.orbit && (x != s.lastX || y != s.lastY)) {
         s.orbit->orbit(-0.01f * float(x - s.lastX), -0.01f * float(y - s.lastY));
         s.dirty = true;
     }
     s.orbiting = left;
-    const bool right = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    const bool right = !panelMouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
     if (right && !s.draggingHandle && s.rendered > 0) {
         s.draggingHandle = true;
         if (handles_.pick(cursor)) showMarkers();
@@ -118,6 +135,7 @@ bool Viewer::input() {
             std::printf("%s\n", handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
     }
     s.lastX = x, s.lastY = y;
+    if (panelMouse) scrollAccumulated = 0.0;  // the panel scrolls itself
     if (scrollAccumulated != 0.0 && s.orbit) {
         s.orbit->zoom(std::pow(0.9f, float(scrollAccumulated)));
         scrollAccumulated = 0.0;
@@ -185,7 +203,9 @@ void Viewer::render() {
         std::printf("after the drag: %s\n",
                     handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
     showMarkers();
-    std::string stats = statsLine(renderer_.takeStats());
+    s.lastStages = renderer_.takeStats();
+    s.lastMs = ms;
+    std::string stats = statsLine(s.lastStages);
     if (s.dragMs >= 0.0) {
         char drag[48];
         std::snprintf(drag, sizeof(drag), "ARAP drag %.1f ms  ", s.dragMs);
@@ -212,8 +232,19 @@ void Viewer::render() {
     s.dirty = false;
 }
 
+void Viewer::drawPanel() {
+    ViewerState& s = state_;
+    overlay_->begin();
+    const PanelFigures figures{s.frame, s.playing, s.scale, s.lastMs, s.lastStages};
+    const PanelRequests asked = drawViewPanel(renderer_.scene(), edits_, figures);
+    overlay_->end();
+    if (asked.edited) s.dirty = true;
+    if (asked.togglePlay) s.playing = !s.playing;
+    if (asked.reset) s.frame = scene_.time.frameStart, s.dirty = true;
+}
+
 bool Viewer::present() {
-    const ViewerState& s = state_;
+    ViewerState& s = state_;
     const auto fb = window_.framebufferSize();
     display_.draw(s.shown, s.exposure, scene_.render.toneCurve, fb.width, fb.height);
     // The last frame is shown once it is refined to full size.
@@ -223,6 +254,12 @@ bool Viewer::present() {
             options_.screenshot.empty() ? "eikon_view.png" : options_.screenshot;
         writePngRgb8(path, fb.width, fb.height, display_.readPixels(fb.width, fb.height));
         std::printf("wrote %s\n", path.c_str());
+    }
+    if (s.panel) drawPanel();
+    if (last && !options_.panelScreenshot.empty()) {
+        writePngRgb8(options_.panelScreenshot, fb.width, fb.height,
+                     display_.readPixels(fb.width, fb.height));
+        std::printf("wrote %s\n", options_.panelScreenshot.c_str());
     }
     window_.swapBuffers();
     return !last;

@@ -9,8 +9,10 @@
 // changes, each pass of the loop renders the same picture at twice the size of the last, up to
 // the full size. Light transport does not depend on the picture's size, so the refinements
 // reuse it (photons, light volumes, sweeps): they rerun the viewing pass alone.
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -22,6 +24,7 @@
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
 #include "render/image.h"
+#include "render/ui_overlay.h"
 
 struct GLFWwindow;
 
@@ -36,7 +39,8 @@ struct ScriptedDrag {
 struct ViewerOptions {
     // Render this many frames (orbiting 10 degrees each), refine the last to full size, then quit.
     int exitAfter = 0;
-    std::string screenshot;
+    std::string screenshot;       // the picture
+    std::string panelScreenshot;  // the window, the panel drawn over the picture
     std::optional<ScriptedDrag> drag;
     int previewScale = 4;  // a power of two; 1: every picture at full size
     bool play = false;     // start playing the frames, as Space does
@@ -57,6 +61,9 @@ struct ViewerState {
     // (it loads, resamples and lights the scene), then the sums of the later frames' and of the
     // refinements'.
     double firstMs = 0.0, framesMs = 0.0, refinementsMs = 0.0;
+    double lastMs = 0.0;  // the last picture's, and its stages, for the panel
+    std::vector<StageTime> lastStages;
+    bool panel = true;   // the relighting panel (apps/view_panel.h) shows
     Image image, shown;  // the render at full size, and with the handles' markers
     std::optional<OrbitCamera> orbit;
     double lastX = 0, lastY = 0;  // the cursor at the last input, window units
@@ -77,7 +84,8 @@ public:
     bool input();
     // Renders the frame the state asks for, if anything changed.
     void render();
-    // Draws the last picture, saves a screenshot when asked; false when --exit-after is reached.
+    // Draws the last picture, saves a screenshot when asked (the picture, not the panel), draws
+    // the panel over it and takes its requests; false when --exit-after is reached.
     bool present();
 
     const ViewerState& state() const { return state_; }
@@ -86,6 +94,8 @@ private:
     // The camera of `frame` (a frame's scene) over the renderer's volume.
     CameraFrame cameraOf(const Scene& frame) const;
     void showMarkers();
+    void keyShortcuts();  // Tab, E, Q, Space, [, ], R, H, P
+    void drawPanel();     // the relighting panel over the picture, and what it asks for
 
     const Scene& scene_;  // as loaded: its camera is the one R resets to
     SceneDriver& driver_;
@@ -95,6 +105,7 @@ private:
     ViewerOptions options_;
     ViewEdits edits_;  // the user's edits so far, written into every frame's scene
     DisplayPass display_;
+    std::unique_ptr<UiOverlay> overlay_;  // after the viewer's own callbacks, which it chains
     ViewerState state_;
     bool keysDown_[349] = {};  // GLFW_KEY_LAST + 1 (checked in viewer.cpp)
     bool pressed(int key);     // true once per press

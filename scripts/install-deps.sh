@@ -8,6 +8,7 @@ PACKAGES=(
     libopenvdb-dev libopenvdb-tools libnanovdb-dev libboost-iostreams-dev libtbb-dev
     libopenmesh-dev libeigen3-dev
     libglm-dev libglfw3-dev libepoxy-dev libegl-dev libgl-dev
+    libimgui-dev  # the viewer's panel (Dear ImGui with its GLFW and OpenGL 3 backends)
     libegl-mesa0 libgl1-mesa-dri libglx-mesa0 xvfb xauth
     nlohmann-json3-dev libcli11-dev libpng-dev libopenexr-dev
     zlib1g-dev  # gzip-encoded NRRD scans (core/scan_volume.cpp)

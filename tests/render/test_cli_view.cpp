@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "render/image.h"
 #include "support/arap_ball_scene.h"
 #include "support/run_eikon.h"
 #include "support/test_paths.h"
@@ -211,4 +212,36 @@ TEST_CASE("a bad --edit fails before the window opens, in one line", "[cli][view
         checkOneLineError(r, "--edit: ");
         CHECK(r.err.find(c.says) != std::string::npos);
     }
+}
+
+// The relighting panel (apps/view_panel.h) is drawn over the picture's top left corner and
+// nowhere else: the window with the panel and the picture alone differ there, and are the same
+// bytes beyond the panel's width. --screenshot keeps the picture alone.
+TEST_CASE("eikon view draws its panel over the picture's corner and leaves the rest",
+          "[cli][view][panel]") {
+#ifndef EIKON_XVFB_RUN
+    WARN("xvfb-run was not found when this test was built: the viewer cannot run");
+#else
+    const std::string dir = scratchDir("cli_view_panel");
+    const RunResult r = runEikon("view " + quoted(sourcePath("data/scenes/fog_sphere_spot.json")) +
+                                     " --size 640x480 --backend cpu --exit-after 1 --screenshot " +
+                                     quoted(dir + "/picture.png") + " --panel-screenshot " +
+                                     quoted(dir + "/panel.png"),
+                                 dir, quoted(EIKON_XVFB_RUN) + " -a");
+    INFO("stdout:\n" << r.out << "stderr:\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+    const eikon::Image picture = eikon::readPng(dir + "/picture.png");
+    const eikon::Image panel = eikon::readPng(dir + "/panel.png");
+    REQUIRE(picture.width == 640);
+    REQUIRE(panel.width == 640);
+    int changedInCorner = 0, changedBeyond = 0;
+    for (int y = 0; y < 480; ++y)
+        for (int x = 0; x < 640; ++x) {
+            const bool differs = picture.at(x, y) != panel.at(x, y);
+            if (x < 300 && y < 100) changedInCorner += differs;
+            if (x >= 400) changedBeyond += differs;
+        }
+    CHECK(changedInCorner > 300 * 100 / 2);  // the panel's title, figures and buttons
+    CHECK(changedBeyond == 0);
+#endif
 }
