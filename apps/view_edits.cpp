@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "core/error.h"
+#include "render/light_transport_registry.h"
 
 namespace eikon::app {
 namespace {
@@ -85,6 +86,11 @@ void ViewEdits::add(const Scene& scene, const std::string& text) {
     const size_t equals = text.find('=');
     if (equals == std::string::npos)
         throw Error("--edit", "'" + text + "' is not POINTER=VALUE (e.g. /lights/0/intensity=2)");
+    constexpr const char* kMethodPointer = "/render/light_transport/method";
+    if (text.substr(0, equals) == kMethodPointer) {
+        setMethod(text.substr(equals + 1));
+        return;
+    }
     ViewEdit edit;
     edit.pointer = text.substr(0, equals);
     std::string why;
@@ -111,8 +117,21 @@ void ViewEdits::set(ViewEdit edit) {
     edits_.push_back(std::move(edit));
 }
 
+void ViewEdits::setMethod(const std::string& name) {
+    std::string names = "auto";
+    bool known = name == "auto";
+    for (const LightTransportMethod& m : lightTransportMethods()) {
+        names += ", " + m.name;
+        known = known || m.name == name;
+    }
+    if (!known)
+        throw Error("--edit", "no light-transport method '" + name + "' (there are " + names + ")");
+    method_ = name;
+}
+
 void ViewEdits::apply(Scene& frame) const {
     for (const ViewEdit& e : edits_) writeAnimationTarget(frame, e.target, e.value.data());
+    if (!method_.empty()) patchLightTransport(frame, "{\"method\": \"" + method_ + "\"}");
 }
 
 std::string ViewEdits::jsonPatch() const {
@@ -126,6 +145,10 @@ std::string ViewEdits::jsonPatch() const {
         out += std::string(i ? ", " : "") + "{\"op\": \"add\", \"path\": \"" + e.pointer +
                "\", \"value\": " + value + "}";
     }
+    if (!method_.empty())
+        out += std::string(edits_.empty() ? "" : ", ") +
+               "{\"op\": \"add\", \"path\": \"/render/light_transport/method\", \"value\": \"" +
+               method_ + "\"}";
     return out + "]";
 }
 

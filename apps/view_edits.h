@@ -38,19 +38,28 @@ public:
     // editableTarget refuses or a value of the wrong count.
     bool set(const Scene& scene, const std::string& pointer, std::vector<float> value);
 
+    // The light-transport method (render/light_transport_registry.h: a registered name or
+    // "auto"), its settings sections kept; "--edit /render/light_transport/method=NAME" too.
+    // Throws eikon::Error at "--edit" for a name not registered, listing the names.
+    void setMethod(const std::string& name);
+    const std::string& method() const { return method_; }  // "": the scene's
+
     // Writes every edit into `frame` (a frame's scene, its tracks evaluated).
     void apply(Scene& frame) const;
 
     const std::vector<ViewEdit>& edits() const { return edits_; }
-    bool empty() const { return edits_.empty(); }
+    bool empty() const { return edits_.empty() && method_.empty(); }
 
     // The edits as a JSON Patch (RFC 6902) of the scene file, on one line: what keeps them
     // (Python's jsonpatch, or by hand). Its operations are "add", which replaces a member that is
-    // there and adds one the file left at its default, where "replace" would fail.
+    // there and adds one the file left at its default, where "replace" would fail. A method's
+    // operation adds /render/light_transport/method, which needs a "light_transport" object
+    // in the file's "render" ({} will do).
     std::string jsonPatch() const;
 
 private:
     std::vector<ViewEdit> edits_;
+    std::string method_;
 };
 
 }  // namespace eikon::app

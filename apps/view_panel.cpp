@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "render/light_transport_registry.h"
+
 namespace eikon::app {
 namespace {
 
@@ -124,6 +126,20 @@ void materialRows(const Scene& shown, Editor& editor) {
     }
 }
 
+// The method combo: "auto" and every registered method; the scene's choice shows first.
+void methodRow(const Scene& shown, ViewEdits& edits, PanelRequests& requests) {
+    const std::string current = lightTransportName(shown);
+    if (!ImGui::BeginCombo("light transport", current.c_str())) return;
+    std::vector<std::string> names{"auto"};
+    for (const LightTransportMethod& m : lightTransportMethods()) names.push_back(m.name);
+    for (const std::string& name : names)
+        if (ImGui::Selectable(name.c_str(), name == current) && name != current) {
+            edits.setMethod(name);
+            requests.edited = true;
+        }
+    ImGui::EndCombo();
+}
+
 void figureRows(const PanelFigures& f, PanelRequests& requests) {
     if (f.scale == 1)
         ImGui::Text("frame %d, full size, %.0f ms (%.1f fps)", f.frame, f.frameMs,
@@ -153,6 +169,7 @@ PanelRequests drawViewPanel(const Scene& shown, ViewEdits& edits, const PanelFig
     }
     ImGui::PushItemWidth(215.0f);  // and the labels to its right
     figureRows(figures, requests);
+    methodRow(shown, edits, requests);
     Editor editor(shown, edits, requests);
     if (ImGui::CollapsingHeader("lights", ImGuiTreeNodeFlags_DefaultOpen)) lightRows(shown, editor);
     if (ImGui::CollapsingHeader("materials")) materialRows(shown, editor);

@@ -159,6 +159,7 @@ void Viewer::render() {
     if (scriptedNow) s.pendingDrag += options_.drag->pixels, s.dirty = true;
     if (!options_.edits.empty() && s.frames == 1) {
         for (const ViewEdit& e : options_.edits.edits()) edits_.set(e);
+        if (!options_.edits.method().empty()) edits_.setMethod(options_.edits.method());
         options_.edits = ViewEdits{};
         std::printf("edited; to keep the edits, patch the scene with %s\n",
                     edits_.jsonPatch().c_str());

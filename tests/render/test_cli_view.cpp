@@ -178,6 +178,17 @@ TEST_CASE("eikon view --edit reruns only the stages it touches, and its JSON Pat
           std::string::npos);
     CHECK(index.out.find("gradients 2, octrees 2, photons runs 2") != std::string::npos);
 
+    // The method: the picture after the edit is the plane sweep's.
+    const RunResult method =
+        runEikon("view " + quoted(scene) + common + quoted(dir + "/method.png") +
+                     " --edit /render/light_transport/method=plane_sweep",
+                 dir, xvfb);
+    INFO("stdout:\n" << method.out << "stderr:\n" << method.err);
+    REQUIRE(method.exitCode == 0);
+    CHECK(method.out.find("[{\"op\": \"add\", \"path\": \"/render/light_transport/method\", "
+                          "\"value\": \"plane_sweep\"}]") != std::string::npos);
+    CHECK(method.out.find("plane_sweep runs 1") != std::string::npos);
+
     // The patch applied by hand: the file says 45 where it said 30.
     std::string text = readFile(scene);
     const std::string from = "\"intensity\": 30,";
@@ -205,6 +216,8 @@ TEST_CASE("a bad --edit fails before the window opens, in one line", "[cli][view
         {"/lights/0/color=1,1", "takes 3 numbers, not 2"},
         {"/lights/0/intensity=nan", "not finite numbers"},
         {"/lights/0/intensity=2x", "not finite numbers"},
+        {"/render/light_transport/method=rays",
+         "no light-transport method 'rays' (there are auto, "},
     };
     for (const auto& c : cases) {
         const RunResult r = runEikon("view " + scene + " --edit " + quoted(c.edit), dir);
