@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/light_gizmos.h"
 #include "apps/memory_limit_option.h"
 #include "apps/view_handles.h"
 #include "apps/viewer.h"
@@ -47,7 +48,8 @@ ScriptedDrag parseDrag(const std::string& text) {
     if (colon == std::string::npos ||
         std::sscanf(text.c_str() + colon + 1, "%f,%f%c", &d.pixels.x, &d.pixels.y, &end) != 2 ||
         !std::isfinite(d.pixels.x) || !std::isfinite(d.pixels.y))
-        throw Error("--drag", "'" + text + "' is not MESH/HANDLE:DX,DY (pixels, y down)");
+        throw Error("--drag",
+                    "'" + text + "' is not MESH/HANDLE:DX,DY or lights/I:DX,DY (pixels, y down)");
     d.handle = text.substr(0, colon);
     return d;
 }
@@ -72,7 +74,9 @@ int runView(const ViewOptions& o) {
     // Before the window opens, so that a bad scene or --drag fails without a display.
     SceneDriver driver(scene);
     ViewHandles handles(driver, scene);
-    if (options.drag) handles.select(options.drag->handle);
+    const bool lightDrag = options.drag && options.drag->handle.rfind("lights/", 0) == 0;
+    if (options.drag && !lightDrag) handles.select(options.drag->handle);
+    if (lightDrag) LightGizmos{}.select(options.drag->handle, scene.lights.size());  // checks it
     for (const std::string& edit : o.edits) options.edits.add(scene, edit);
     GlfwWindowContext window(scene.render.width, scene.render.height, "eikon view");
     // "auto": the window's GPU unless it is a software rasterizer (see pipeline/backend_choice.h).
@@ -148,8 +152,9 @@ void addViewCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--panel-screenshot", o->panelScreenshot,
                     "with --exit-after: save the window with the panel over the last frame here");
     cmd->add_option("--drag", o->drag,
-                    "MESH/HANDLE:DX,DY: after the first frame, drag that ARAP handle by DX,DY "
-                    "pixels (y down) as a right drag would, and print where it went (for tests)");
+                    "MESH/HANDLE:DX,DY or lights/I:DX,DY: after the first frame, drag that ARAP "
+                    "handle or light's gizmo by DX,DY pixels (y down) as a right drag would, and "
+                    "print where it went (for tests)");
     cmd->footer(
         "Examples (from the repository root; a display, or xvfb-run -a):\n  eikon view "
         "data/scenes/glass_sphere_fog.json\n  eikon view ../shared/data/vdb/houdini_smoke1.vdb "

@@ -47,6 +47,10 @@ Viewer::Viewer(const Scene& scene, SceneDriver& driver, ViewHandles& handles,
     state_.frame = scene.time.frameStart;
     state_.exposure = scene.render.exposure;
     state_.playing = options_.play;
+    if (options_.drag && options_.drag->handle.rfind("lights/", 0) == 0) {
+        lights_.select(options_.drag->handle, scene.lights.size());
+        state_.draggingLight = true;
+    }
     glfwSetScrollCallback(window_.window(),
                           [](GLFWwindow*, double, double dy) { scrollAccumulated += dy; });
     overlay_ = std::make_unique<UiOverlay>(window_.window());
@@ -72,11 +76,15 @@ CameraFrame Viewer::cameraOf(const Scene& frame) const {
 void Viewer::showMarkers() {
     state_.shown = state_.image;
     handles_.drawMarkers(state_.shown);
+    if (state_.panel) lights_.drawMarkers(state_.shown);  // the gizmos hide with the panel
 }
 
 void Viewer::keyShortcuts() {
     ViewerState& s = state_;
-    if (pressed(GLFW_KEY_TAB)) s.panel = !s.panel;
+    if (pressed(GLFW_KEY_TAB)) {
+        s.panel = !s.panel;
+        if (s.rendered > 0) showMarkers();
+    }
     if (pressed(GLFW_KEY_E)) s.exposure += 0.5f;
     if (pressed(GLFW_KEY_Q)) s.exposure -= 0.5f;
     if (pressed(GLFW_KEY_SPACE)) s.playing = !s.playing;
@@ -89,6 +97,7 @@ void Viewer::keyShortcuts() {
     }
     if (pressed(GLFW_KEY_H) && s.rendered > 0) {
         handles_.selectNext();
+        s.draggingLight = false;
         showMarkers();
     }
     s.screenshotAsked = pressed(GLFW_KEY_P);
@@ -125,14 +134,23 @@ bool Viewer::input() {
     const bool right = !panelMouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
     if (right && !s.draggingHandle && s.rendered > 0) {
         s.draggingHandle = true;
-        if (handles_.pick(cursor)) showMarkers();
-    } else if (right && handles_.selected() && moved != glm::vec2(0.0f)) {
+        // An ARAP handle first, a light's gizmo second; neither: the last selection is dragged.
+        if (handles_.pick(cursor)) {
+            s.draggingLight = false;
+            lights_.deselect();
+            showMarkers();
+        } else if (lights_.pick(cursor)) {
+            s.draggingLight = true;
+            showMarkers();
+        }
+    } else if (right && (s.draggingLight ? lights_.selected() : handles_.selected()) &&
+               moved != glm::vec2(0.0f)) {
         s.pendingDrag += moved;
         s.dirty = true;
     } else if (!right && s.draggingHandle) {
         s.draggingHandle = false;
-        if (handles_.selected())
-            std::printf("%s\n", handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
+        if (s.draggingLight ? lights_.selected() : handles_.selected())
+            std::printf("%s\n", describeDragged().c_str());
     }
     s.lastX = x, s.lastY = y;
     if (panelMouse) scrollAccumulated = 0.0;  // the panel scrolls itself
@@ -182,11 +200,15 @@ void Viewer::render() {
     if (s.pendingDrag != glm::vec2(0.0f) && s.rendered > 0) {
         const CameraFrame camera = cameraOf(inputs.scene);
         handles_.locate(camera, width);
-        if (scriptedNow)
-            std::printf("before the drag: %s\n",
-                        handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
+        lights_.locate(inputs.scene, renderer_.volume().bounds, camera, width);
+        if (scriptedNow) std::printf("before the drag: %s\n", describeDragged().c_str());
         const auto dragStart = std::chrono::steady_clock::now();
-        handles_.drag(inputs, camera, width, s.pendingDrag);
+        if (s.draggingLight) {
+            lights_.drag(inputs.scene, camera, width, s.pendingDrag, edits_);
+            edits_.apply(inputs.scene);
+        } else {
+            handles_.drag(inputs, camera, width, s.pendingDrag);
+        }
         s.dragMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - dragStart)
                 .count();
@@ -200,16 +222,17 @@ void Viewer::render() {
     s.image = resizeBilinear(picture, width, height);
     if (!s.orbit) s.orbit.emplace(scene_.camera, renderer_.volume().bounds, width, height);
     handles_.locate(cameraOf(renderer_.scene()), width);  // in the full size's pixels
-    if (scriptedNow)
-        std::printf("after the drag: %s\n",
-                    handles_.describeSelected(driver_.timeOfFrame(s.frame)).c_str());
+    lights_.locate(renderer_.scene(), renderer_.volume().bounds, cameraOf(renderer_.scene()),
+                   width);
+    if (scriptedNow) std::printf("after the drag: %s\n", describeDragged().c_str());
     showMarkers();
     s.lastStages = renderer_.takeStats();
     s.lastMs = ms;
     std::string stats = statsLine(s.lastStages);
     if (s.dragMs >= 0.0) {
         char drag[48];
-        std::snprintf(drag, sizeof(drag), "ARAP drag %.1f ms  ", s.dragMs);
+        std::snprintf(drag, sizeof(drag), "%s drag %.1f ms  ", s.draggingLight ? "light" : "ARAP",
+                      s.dragMs);
         stats = drag + stats;
         s.dragMs = -1.0;
     }
@@ -231,6 +254,11 @@ void Viewer::render() {
     ++s.rendered;
     s.scale = scale;
     s.dirty = false;
+}
+
+std::string Viewer::describeDragged() const {
+    if (state_.draggingLight) return lights_.describeSelected(edits_);
+    return handles_.describeSelected(driver_.timeOfFrame(state_.frame));
 }
 
 void Viewer::drawPanel() {

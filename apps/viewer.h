@@ -16,6 +16,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "apps/light_gizmos.h"
 #include "apps/orbit_camera.h"
 #include "apps/view_edits.h"
 #include "apps/view_handles.h"
@@ -30,7 +31,8 @@ struct GLFWwindow;
 
 namespace eikon::app {
 
-// A scripted drag (--drag): the handle's name and the pixels it moves by.
+// A scripted drag (--drag): the handle's name ("mesh/handle", or "lights/<i>" for a light's
+// gizmo) and the pixels it moves by.
 struct ScriptedDrag {
     std::string handle;
     glm::vec2 pixels{0.0f};
@@ -68,6 +70,7 @@ struct ViewerState {
     std::optional<OrbitCamera> orbit;
     double lastX = 0, lastY = 0;  // the cursor at the last input, window units
     bool orbiting = false, draggingHandle = false;
+    bool draggingLight = false;   // the right drag moves a light's gizmo, not an ARAP handle
     glm::vec2 pendingDrag{0.0f};  // image pixels the selected handle still has to move
     double dragMs = -1.0;         // the last drag's solve, for the title; -1: none since
     bool screenshotAsked = false;
@@ -96,10 +99,13 @@ private:
     void showMarkers();
     void keyShortcuts();  // Tab, E, Q, Space, [, ], R, H, P
     void drawPanel();     // the relighting panel over the picture, and what it asks for
+    // Where the selected handle or light is, and what keeps its pose.
+    std::string describeDragged() const;
 
     const Scene& scene_;  // as loaded: its camera is the one R resets to
     SceneDriver& driver_;
     ViewHandles& handles_;
+    LightGizmos lights_;
     GlfwWindowContext& window_;
     FrameRenderer& renderer_;
     ViewerOptions options_;

@@ -258,3 +258,67 @@ TEST_CASE("eikon view draws its panel over the picture's corner and leaves the r
     CHECK(changedBeyond == 0);
 #endif
 }
+
+namespace {
+
+// Reads "<prefix>light 0 at pixel (x, y); ..." from the viewer's output.
+glm::vec2 lightPixel(const std::string& out, const std::string& prefix) {
+    glm::vec2 at(NAN);
+    for (const std::string& line : lines(out))
+        if (line.rfind(prefix, 0) == 0)
+            REQUIRE(std::sscanf(line.c_str() + prefix.size(), "light 0 at pixel (%f, %f)", &at.x,
+                                &at.y) == 2);
+    return at;
+}
+
+}  // namespace
+
+// A light's gizmo (apps/light_gizmos.h), dragged as a right drag would: a spot light's square
+// follows the drag exactly (its position moves in the camera plane), a directional light's too
+// while the cursor stays over its sphere (its direction turns); the drag is an edit that reruns
+// the light's transport, and the patch printed keeps it.
+TEST_CASE("eikon view drags a light's gizmo, and prints the patch that keeps the light there",
+          "[cli][view][light]") {
+#ifndef EIKON_XVFB_RUN
+    WARN("xvfb-run was not found when this test was built: the viewer cannot run");
+#else
+    const std::string dir = scratchDir("cli_view_light_drag");
+    const std::string xvfb = quoted(EIKON_XVFB_RUN) + " -a";
+    const RunResult spot =
+        runEikon("view " + quoted(sourcePath("data/scenes/glass_sphere_fog.json")) +
+                     " --size 64x48 --backend cpu --exit-after 2 --drag lights/0:0,-6",
+                 dir, xvfb);
+    INFO("stdout:\n" << spot.out << "stderr:\n" << spot.err);
+    REQUIRE(spot.exitCode == 0);
+    const glm::vec2 moved =
+        lightPixel(spot.out, "after the drag: ") - lightPixel(spot.out, "before the drag: ");
+    CHECK(moved.x == Approx(0.0f).margin(1e-2));
+    CHECK(moved.y == Approx(-6.0f).margin(1e-2));
+    CHECK(spot.out.find("[{\"op\": \"add\", \"path\": \"/lights/0/position\", \"value\": [") !=
+          std::string::npos);
+    CHECK(spot.out.find("photons runs 2") != std::string::npos);
+
+    const RunResult sun = runEikon("view " + quoted(sourcePath("data/scenes/water_pool.json")) +
+                                       " --size 64x48 --backend cpu --exit-after 2 --drag "
+                                       "lights/0:1,2",
+                                   dir, xvfb);
+    INFO("stdout:\n" << sun.out << "stderr:\n" << sun.err);
+    REQUIRE(sun.exitCode == 0);
+    const glm::vec2 turned =
+        lightPixel(sun.out, "after the drag: ") - lightPixel(sun.out, "before the drag: ");
+    CHECK(turned.x == Approx(1.0f).margin(1e-2));
+    CHECK(turned.y == Approx(2.0f).margin(1e-2));
+    const size_t at = sun.out.find("\"path\": \"/lights/0/direction\", \"value\": [");
+    REQUIRE(at != std::string::npos);
+    glm::vec3 d(NAN);
+    REQUIRE(std::sscanf(sun.out.c_str() + sun.out.find('[', at + 20), "[%f, %f, %f]", &d.x, &d.y,
+                        &d.z) == 3);
+    CHECK(std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) == Approx(1.0f).margin(1e-6));
+
+    const RunResult none = runEikon(
+        "view " + quoted(sourcePath("data/scenes/glass_sphere_fog.json")) + " --drag lights/1:0,1",
+        dir);
+    checkOneLineError(none, "--drag: ");
+    CHECK(none.err.find("no light 'lights/1' (the scene has 1 light") != std::string::npos);
+#endif
+}
