@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 
 #include "core/error.h"
 #include "render/light_transport_registry.h"
@@ -91,6 +92,10 @@ void ViewEdits::add(const Scene& scene, const std::string& text) {
         setMethod(text.substr(equals + 1));
         return;
     }
+    if (text.substr(0, equals) == "/render/light_transport") {
+        setTransport(scene, text.substr(equals + 1));
+        return;
+    }
     ViewEdit edit;
     edit.pointer = text.substr(0, equals);
     std::string why;
@@ -129,8 +134,24 @@ void ViewEdits::setMethod(const std::string& name) {
     method_ = name;
 }
 
+void ViewEdits::setTransport(const Scene& scene, const std::string& mergePatch) {
+    Scene trial = scene;
+    apply(trial);  // the section as the edits so far left it
+    try {
+        patchLightTransport(trial, mergePatch);
+        checkLightTransport(trial);
+    } catch (const Error& e) {
+        throw Error("--edit", e.what());
+    } catch (const std::exception& e) {  // nlohmann's parse errors
+        throw Error("--edit", "'" + mergePatch + "' is not JSON (" + e.what() + ")");
+    }
+    transport_ = trial.render.lightTransport;
+    method_.clear();  // the section holds the method now
+}
+
 void ViewEdits::apply(Scene& frame) const {
     for (const ViewEdit& e : edits_) writeAnimationTarget(frame, e.target, e.value.data());
+    if (!transport_.empty()) frame.render.lightTransport = transport_;
     if (!method_.empty()) patchLightTransport(frame, "{\"method\": \"" + method_ + "\"}");
 }
 
@@ -145,8 +166,12 @@ std::string ViewEdits::jsonPatch() const {
         out += std::string(i ? ", " : "") + "{\"op\": \"add\", \"path\": \"" + e.pointer +
                "\", \"value\": " + value + "}";
     }
-    if (!method_.empty())
+    if (!transport_.empty())
         out += std::string(edits_.empty() ? "" : ", ") +
+               "{\"op\": \"add\", \"path\": \"/render/light_transport\", \"value\": " + transport_ +
+               "}";
+    if (!method_.empty())
+        out += std::string(edits_.empty() && transport_.empty() ? "" : ", ") +
                "{\"op\": \"add\", \"path\": \"/render/light_transport/method\", \"value\": \"" +
                method_ + "\"}";
     return out + "]";

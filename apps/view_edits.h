@@ -43,23 +43,31 @@ public:
     // Throws eikon::Error at "--edit" for a name not registered, listing the names.
     void setMethod(const std::string& name);
     const std::string& method() const { return method_; }  // "": the scene's
+    // The light-transport settings: `mergePatch` (RFC 7386 JSON, e.g.
+    // {"photons": {"per_side": 64}}) merged into `scene`'s render.light_transport with the edits
+    // so far, the whole section kept; "--edit /render/light_transport=JSON" too. Throws
+    // eikon::Error at "--edit", keeping nothing, for text that is not JSON or settings a method
+    // refuses (its pointer and reason).
+    void setTransport(const Scene& scene, const std::string& mergePatch);
+    const std::string& transport() const { return transport_; }  // "": the scene's
 
     // Writes every edit into `frame` (a frame's scene, its tracks evaluated).
     void apply(Scene& frame) const;
 
     const std::vector<ViewEdit>& edits() const { return edits_; }
-    bool empty() const { return edits_.empty() && method_.empty(); }
+    bool empty() const { return edits_.empty() && method_.empty() && transport_.empty(); }
 
     // The edits as a JSON Patch (RFC 6902) of the scene file, on one line: what keeps them
     // (Python's jsonpatch, or by hand). Its operations are "add", which replaces a member that is
     // there and adds one the file left at its default, where "replace" would fail. A method's
     // operation adds /render/light_transport/method, which needs a "light_transport" object
-    // in the file's "render" ({} will do).
+    // in the file's "render" ({} will do); settings add the whole section.
     std::string jsonPatch() const;
 
 private:
     std::vector<ViewEdit> edits_;
     std::string method_;
+    std::string transport_;  // the whole render.light_transport section, compact JSON
 };
 
 }  // namespace eikon::app

@@ -4,7 +4,9 @@
 #include <string>
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
+#include "core/error.h"
 #include "render/light_transport_registry.h"
 
 namespace eikon::app {
@@ -140,6 +142,28 @@ void methodRow(const Scene& shown, ViewEdits& edits, PanelRequests& requests) {
     ImGui::EndCombo();
 }
 
+// The method's settings as the scene's render.light_transport JSON, typed and applied; settings a
+// method refuses are shown in red and change nothing.
+void transportSettingsRows(const Scene& shown, ViewEdits& edits, PanelMemory& memory,
+                           PanelRequests& requests) {
+    if (!ImGui::CollapsingHeader("light transport settings (JSON)")) return;
+    if (memory.transportText.empty()) memory.transportText = shown.render.lightTransport;
+    ImGui::InputTextMultiline("##transport", &memory.transportText, ImVec2(-1.0f, 60.0f));
+    if (ImGui::Button("Apply")) {
+        try {
+            edits.setTransport(shown, memory.transportText);
+            memory.transportError.clear();
+            requests.edited = true;
+        } catch (const Error& e) {
+            memory.transportError = e.reason();
+        }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("As on screen")) memory.transportText = shown.render.lightTransport;
+    if (!memory.transportError.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "%s", memory.transportError.c_str());
+}
+
 void figureRows(const PanelFigures& f, PanelRequests& requests) {
     if (f.scale == 1)
         ImGui::Text("frame %d, full size, %.0f ms (%.1f fps)", f.frame, f.frameMs,
@@ -157,7 +181,8 @@ void figureRows(const PanelFigures& f, PanelRequests& requests) {
 
 }  // namespace
 
-PanelRequests drawViewPanel(const Scene& shown, ViewEdits& edits, const PanelFigures& figures) {
+PanelRequests drawViewPanel(const Scene& shown, ViewEdits& edits, const PanelFigures& figures,
+                            PanelMemory& memory) {
     PanelRequests requests;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSizeConstraints(ImVec2(360, 0), ImVec2(360, 1e6f));
@@ -170,6 +195,7 @@ PanelRequests drawViewPanel(const Scene& shown, ViewEdits& edits, const PanelFig
     ImGui::PushItemWidth(215.0f);  // and the labels to its right
     figureRows(figures, requests);
     methodRow(shown, edits, requests);
+    transportSettingsRows(shown, edits, memory, requests);
     Editor editor(shown, edits, requests);
     if (ImGui::CollapsingHeader("lights", ImGuiTreeNodeFlags_DefaultOpen)) lightRows(shown, editor);
     if (ImGui::CollapsingHeader("materials")) materialRows(shown, editor);

@@ -177,6 +177,8 @@ void Viewer::render() {
     if (scriptedNow) s.pendingDrag += options_.drag->pixels, s.dirty = true;
     if (!options_.edits.empty() && s.frames == 1) {
         for (const ViewEdit& e : options_.edits.edits()) edits_.set(e);
+        if (!options_.edits.transport().empty())
+            edits_.setTransport(scene_, options_.edits.transport());
         if (!options_.edits.method().empty()) edits_.setMethod(options_.edits.method());
         options_.edits = ViewEdits{};
         std::printf("edited; to keep the edits, patch the scene with %s\n",
@@ -265,7 +267,7 @@ void Viewer::drawPanel() {
     ViewerState& s = state_;
     overlay_->begin();
     const PanelFigures figures{s.frame, s.playing, s.scale, s.lastMs, s.lastStages};
-    const PanelRequests asked = drawViewPanel(renderer_.scene(), edits_, figures);
+    const PanelRequests asked = drawViewPanel(renderer_.scene(), edits_, figures, panelMemory_);
     overlay_->end();
     if (asked.edited) s.dirty = true;
     if (asked.togglePlay) s.playing = !s.playing;

@@ -20,6 +20,7 @@
 #include "apps/orbit_camera.h"
 #include "apps/view_edits.h"
 #include "apps/view_handles.h"
+#include "apps/view_panel.h"
 #include "pipeline/scene_driver.h"
 #include "render/display_pass.h"
 #include "render/frame_renderer.h"
@@ -112,6 +113,7 @@ private:
     ViewEdits edits_;  // the user's edits so far, written into every frame's scene
     DisplayPass display_;
     std::unique_ptr<UiOverlay> overlay_;  // after the viewer's own callbacks, which it chains
+    PanelMemory panelMemory_;
     ViewerState state_;
     bool keysDown_[349] = {};  // GLFW_KEY_LAST + 1 (checked in viewer.cpp)
     bool pressed(int key);     // true once per press

@@ -189,6 +189,17 @@ TEST_CASE("eikon view --edit reruns only the stages it touches, and its JSON Pat
                           "\"value\": \"plane_sweep\"}]") != std::string::npos);
     CHECK(method.out.find("plane_sweep runs 1") != std::string::npos);
 
+    // The method's settings: fewer photons, traced again; the patch adds the whole section.
+    const RunResult settings =
+        runEikon("view " + quoted(scene) + common + quoted(dir + "/settings.png") + " --edit " +
+                     quoted("/render/light_transport={\"photons\": {\"per_side\": 64}}"),
+                 dir, xvfb);
+    INFO("stdout:\n" << settings.out << "stderr:\n" << settings.err);
+    REQUIRE(settings.exitCode == 0);
+    CHECK(settings.out.find("[{\"op\": \"add\", \"path\": \"/render/light_transport\", "
+                            "\"value\": {\"photons\":{\"per_side\":64}}}]") != std::string::npos);
+    CHECK(settings.out.find("photons runs 2") != std::string::npos);
+
     // The patch applied by hand: the file says 45 where it said 30.
     std::string text = readFile(scene);
     const std::string from = "\"intensity\": 30,";
