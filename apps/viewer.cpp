@@ -106,7 +106,14 @@ void Viewer::keyShortcuts() {
 bool Viewer::input() {
     ViewerState& s = state_;
     GLFWwindow* w = window_.window();
-    window_.pollEvents();
+    // Nothing to render (the picture refined, nothing playing, no script): sleep until an event
+    // or a tenth of a second, rather than redraw the same picture at full speed.
+    const bool idle = !s.dirty && s.scale == 1 && !s.playing && options_.exitAfter == 0 &&
+                      s.pendingDrag == glm::vec2(0.0f);
+    if (idle)
+        glfwWaitEventsTimeout(0.1);
+    else
+        window_.pollEvents();
     if (pressed(GLFW_KEY_ESCAPE)) return false;
     // What the panel takes (the cursor over it, a field being typed in) the view leaves alone.
     const bool panelKeys = s.panel && overlay_->wantsKeyboard();
