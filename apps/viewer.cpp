@@ -54,9 +54,13 @@ Viewer::Viewer(const Scene& scene, SceneDriver& driver, ViewHandles& handles,
     glfwSetScrollCallback(window_.window(),
                           [](GLFWwindow*, double, double dy) { scrollAccumulated += dy; });
     overlay_ = std::make_unique<UiOverlay>(window_.window());
+    // ARAP handles read the driver's frame as the viewer drags them: they keep the simulation in
+    // the viewer's thread.
+    if (driver_.arapHandles().empty()) ahead_ = std::make_unique<SimulationAhead>(driver_, scene_);
 }
 
 Viewer::~Viewer() {
+    ahead_.reset();    // stops stepping before the driver goes
     overlay_.reset();  // gives the window its callbacks back
     glfwSetScrollCallback(window_.window(), nullptr);
 }
@@ -88,8 +92,9 @@ void Viewer::keyShortcuts() {
     if (pressed(GLFW_KEY_E)) s.exposure += 0.5f;
     if (pressed(GLFW_KEY_Q)) s.exposure -= 0.5f;
     if (pressed(GLFW_KEY_SPACE)) s.playing = !s.playing;
-    if (pressed(GLFW_KEY_RIGHT_BRACKET)) ++s.frame, s.dirty = true;
-    if (pressed(GLFW_KEY_LEFT_BRACKET)) --s.frame, s.dirty = true;
+    // Stepping pauses: the frame stepped from is the one on screen.
+    if (pressed(GLFW_KEY_RIGHT_BRACKET)) ++s.frame, s.dirty = true, s.playing = false;
+    if (pressed(GLFW_KEY_LEFT_BRACKET)) --s.frame, s.dirty = true, s.playing = false;
     if (pressed(GLFW_KEY_R) && s.orbit) {
         s.orbit.emplace(scene_.camera, renderer_.volume().bounds, scene_.render.width,
                         scene_.render.height);
@@ -168,7 +173,8 @@ bool Viewer::input() {
     }
     // A scripted run (--exit-after) stops moving after its frames, so that the last one refines.
     const bool scriptDone = options_.exitAfter > 0 && s.frames >= options_.exitAfter;
-    if (s.playing && s.frames > 0 && !scriptDone) ++s.frame, s.dirty = true;
+    // Playing: frame by frame here when the simulation cannot run ahead (takeSteppedFrame).
+    if (playing() && s.frames > 0 && !ahead_) ++s.frame, s.dirty = true;
     if (s.frame > scene_.time.frameEnd) s.frame = scene_.time.frameStart;
     if (s.frame < scene_.time.frameStart) s.frame = scene_.time.frameEnd;
     if (options_.exitAfter > 0 && s.frames > 0 && !scriptDone && s.orbit) {
@@ -178,8 +184,45 @@ bool Viewer::input() {
     return true;
 }
 
+bool Viewer::playing() const {
+    const bool scriptDone = options_.exitAfter > 0 && state_.frames >= options_.exitAfter;
+    return state_.playing && !scriptDone;
+}
+
+std::optional<FrameInputs> Viewer::takeSteppedFrame() {
+    ViewerState& s = state_;
+    if (!ahead_) return std::nullopt;
+    const bool scripted = options_.exitAfter > 0;
+    const bool play = playing() && s.frames > 0;
+    if (play && !ahead_->running())
+        ahead_->start(s.frame >= scene_.time.frameEnd ? scene_.time.frameStart : s.frame + 1,
+                      scripted ? options_.exitAfter - s.frames : -1);
+    if (!play && ahead_->running()) {
+        // Paused (or a frame asked for): what was stepped and not shown goes with the next
+        // frame's inputs, so the renderer is given everything the driver handed out.
+        const int onScreen = s.frame;
+        ahead_->stop();
+        if (std::optional<FrameInputs> left = ahead_->take(false)) {
+            if (carried_)
+                mergeFrameInputs(*carried_, std::move(*left));
+            else
+                carried_ = std::move(left);
+        }
+        s.frame = onScreen;
+        return std::nullopt;
+    }
+    if (!ahead_->running() && !play) return std::nullopt;
+    std::optional<FrameInputs> stepped = ahead_->take(scripted);
+    if (stepped) s.frame = stepped->frame, s.dirty = true;
+    return stepped;
+}
+
 void Viewer::render() {
     ViewerState& s = state_;
+    // The frame's time counts its simulation step (or the wait for the simulation's thread) and a
+    // drag's solve with the render.
+    const auto start = std::chrono::steady_clock::now();
+    std::optional<FrameInputs> stepped = takeSteppedFrame();
     const bool scriptedNow = options_.drag && s.frames == 1;
     if (scriptedNow) s.pendingDrag += options_.drag->pixels, s.dirty = true;
     if (!options_.edits.empty() && s.frames == 1) {
@@ -196,14 +239,25 @@ void Viewer::render() {
     int scale = 1;
     if (s.dirty)
         scale = options_.previewScale;
-    else if (s.scale > 1)
+    else if (s.scale > 1 && !playing())  // a playing picture is replaced, not refined
         scale = s.scale / 2;
     else
         return;
     const int width = scene_.render.width, height = scene_.render.height;
-    // The frame's time counts its simulation step (if any) and a drag's solve with the render.
-    const auto start = std::chrono::steady_clock::now();
-    FrameInputs inputs = driver_.frameInputs(s.frame, scene_);
+    FrameInputs inputs;
+    if (stepped) {
+        inputs = std::move(*stepped);
+    } else if (ahead_ && ahead_->running()) {
+        inputs = FrameInputs(s.frame, frameScene_);  // the driver is the thread's: same frame
+    } else {
+        inputs = driver_.frameInputs(s.frame, scene_);
+        if (carried_) {
+            mergeFrameInputs(*carried_, std::move(inputs));
+            inputs = std::move(*carried_);
+            carried_.reset();
+        }
+    }
+    frameScene_ = inputs.scene;
     edits_.apply(inputs.scene);  // over the tracks: the user's edits win, as the view does
     if (s.orbit) inputs.scene.camera = s.orbit->spec();  // the user's view wins
     if (s.pendingDrag != glm::vec2(0.0f) && s.rendered > 0) {
@@ -278,7 +332,7 @@ void Viewer::drawPanel() {
     overlay_->end();
     if (asked.edited) s.dirty = true;
     if (asked.togglePlay) s.playing = !s.playing;
-    if (asked.reset) s.frame = scene_.time.frameStart, s.dirty = true;
+    if (asked.reset) s.frame = scene_.time.frameStart, s.dirty = true, s.playing = false;
 }
 
 bool Viewer::present() {

@@ -9,6 +9,10 @@
 // changes, each pass of the loop renders the same picture at twice the size of the last, up to
 // the full size. Light transport does not depend on the picture's size, so the refinements
 // reuse it (photons, light volumes, sweeps): they rerun the viewing pass alone.
+// Playing, the simulation steps on a thread of its own (pipeline/simulation_ahead.h) and the view
+// shows the latest frame it finished, so the simulation does not wait for the view (a scene with
+// ARAP handles steps in the viewer's thread, since a drag reads the driver's frame). A playing
+// picture is replaced by the next frame rather than refined; [ ] and Reset pause.
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +26,7 @@
 #include "apps/view_handles.h"
 #include "apps/view_panel.h"
 #include "pipeline/scene_driver.h"
+#include "pipeline/simulation_ahead.h"
 #include "render/display_pass.h"
 #include "render/frame_renderer.h"
 #include "render/gl_context.h"
@@ -100,6 +105,9 @@ private:
     void showMarkers();
     void keyShortcuts();  // Tab, E, Q, Space, [, ], R, H, P
     void drawPanel();     // the relighting panel over the picture, and what it asks for
+    // While playing, the frame the simulation's thread stepped (starting and stopping it).
+    std::optional<FrameInputs> takeSteppedFrame();
+    bool playing() const;  // frames play (Space, --play), and a script has frames left
     // Where the selected handle or light is, and what keeps its pose.
     std::string describeDragged() const;
 
@@ -114,6 +122,10 @@ private:
     DisplayPass display_;
     std::unique_ptr<UiOverlay> overlay_;  // after the viewer's own callbacks, which it chains
     PanelMemory panelMemory_;
+    // Playing steps the simulation on a thread of its own (none with ARAP handles).
+    std::unique_ptr<SimulationAhead> ahead_;
+    std::optional<FrameInputs> carried_;  // stepped, not shown, when playing stopped
+    Scene frameScene_;  // the last frame's scene as the driver made it (tracks, no edits)
     ViewerState state_;
     bool keysDown_[349] = {};  // GLFW_KEY_LAST + 1 (checked in viewer.cpp)
     bool pressed(int key);     // true once per press
