@@ -100,11 +100,14 @@ TEST_CASE("a bad --drag fails before the window opens, naming the handles there 
     CHECK(malformed.err.find("MESH/HANDLE:DX,DY") != std::string::npos);
 }
 
+// The three viewer scripts below tagged [release_only] run a photon scene 2-4 times each: 20-32 s
+// apiece under the sanitizers (they passed there at f8c8f0b), where the panel's and the bad
+// edits' cases keep the viewer's new code under ASan + UBSan within CI's time.
 // The progressive viewer (apps/viewer.h): a change is rendered at 1/4 of the size and refined while
 // nothing changes. The refined picture is the full-size render's, byte for byte (the window's
 // pixels), and neither the smaller pictures nor the refinements trace the photons again.
 TEST_CASE("eikon view refines a preview to the full-size picture and reuses the photons",
-          "[cli][view][progressive]") {
+          "[cli][view][progressive][release_only]") {
 #ifndef EIKON_XVFB_RUN
     WARN("xvfb-run was not found when this test was built: the viewer cannot run");
 #else
@@ -150,7 +153,7 @@ TEST_CASE("eikon view refines a preview to the full-size picture and reuses the 
 // the photons; the JSON Patch printed keeps the edit: the scene patched so renders the edited
 // picture byte for byte.
 TEST_CASE("eikon view --edit reruns only the stages it touches, and its JSON Patch keeps it",
-          "[cli][view][edit]") {
+          "[cli][view][edit][release_only]") {
 #ifndef EIKON_XVFB_RUN
     WARN("xvfb-run was not found when this test was built: the viewer cannot run");
 #else
@@ -289,7 +292,7 @@ glm::vec2 lightPixel(const std::string& out, const std::string& prefix) {
 // while the cursor stays over its sphere (its direction turns); the drag is an edit that reruns
 // the light's transport, and the patch printed keeps it.
 TEST_CASE("eikon view drags a light's gizmo, and prints the patch that keeps the light there",
-          "[cli][view][light]") {
+          "[cli][view][light][release_only]") {
 #ifndef EIKON_XVFB_RUN
     WARN("xvfb-run was not found when this test was built: the viewer cannot run");
 #else

@@ -180,8 +180,10 @@ TEST_CASE(
                       gpuImages[0].pixels.size() * sizeof(glm::vec4)) == 0);
 }
 
+// Release only (45 s under the sanitizers): the [dispersion] cases of photons, the plane sweep and
+// the wavefront run each method's dispersive passes under ASan + UBSan at a smaller size.
 TEST_CASE("every light-transport method renders a dispersive scene without a warning",
-          "[view][dispersion]") {
+          "[view][dispersion][release_only]") {
     // A flint ball in fog under a directional light: photons, the plane sweep and the wavefront
     // disperse its light (their own tests: test_photon_dispersion.cpp,
     // test_plane_sweep_dispersion.cpp, test_wavefront_dispersion.cpp), light volumes carry it
