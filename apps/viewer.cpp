@@ -199,16 +199,17 @@ std::optional<FrameInputs> Viewer::takeSteppedFrame() {
                       scripted ? options_.exitAfter - s.frames : -1);
     if (!play && ahead_->running()) {
         // Paused (or a frame asked for): what was stepped and not shown goes with the next
-        // frame's inputs, so the renderer is given everything the driver handed out.
-        const int onScreen = s.frame;
+        // frame's inputs, so the renderer is given everything the driver handed out. A pause
+        // shows the last frame stepped, where the driver is, rather than stepping it back to the
+        // one on screen; a frame the user asked for ([ ], Reset) is kept.
         ahead_->stop();
         if (std::optional<FrameInputs> left = ahead_->take(false)) {
+            if (s.frame == renderedFrame_) s.frame = left->frame, s.dirty = true;
             if (carried_)
                 mergeFrameInputs(*carried_, std::move(*left));
             else
                 carried_ = std::move(left);
         }
-        s.frame = onScreen;
         return std::nullopt;
     }
     if (!ahead_->running() && !play) return std::nullopt;
@@ -258,6 +259,7 @@ void Viewer::render() {
         }
     }
     frameScene_ = inputs.scene;
+    renderedFrame_ = inputs.frame;
     edits_.apply(inputs.scene);  // over the tracks: the user's edits win, as the view does
     if (s.orbit) inputs.scene.camera = s.orbit->spec();  // the user's view wins
     if (s.pendingDrag != glm::vec2(0.0f) && s.rendered > 0) {

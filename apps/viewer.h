@@ -125,7 +125,8 @@ private:
     // Playing steps the simulation on a thread of its own (none with ARAP handles).
     std::unique_ptr<SimulationAhead> ahead_;
     std::optional<FrameInputs> carried_;  // stepped, not shown, when playing stopped
-    Scene frameScene_;  // the last frame's scene as the driver made it (tracks, no edits)
+    Scene frameScene_;        // the last frame's scene as the driver made it (tracks, no edits)
+    int renderedFrame_ = -1;  // the frame of the picture on screen
     ViewerState state_;
     bool keysDown_[349] = {};  // GLFW_KEY_LAST + 1 (checked in viewer.cpp)
     bool pressed(int key);     // true once per press
