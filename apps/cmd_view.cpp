@@ -30,6 +30,7 @@ struct ViewOptions {
     std::string backend = "auto";
     int exitAfter = 0;  // render this many frames (orbiting 10 degrees each), then quit
     int previewScale = 4;
+    double frameBudget = -1.0;  // ms; < 0: kInteractiveFrameBudgetMs interactively, else none
     std::string screenshot;
     std::string panelScreenshot;
     std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
@@ -40,6 +41,10 @@ struct ViewOptions {
     std::string up;
     std::string grid;
 };
+
+// The frame budget of an interactive view unless --frame-budget says otherwise: 15 frames a
+// second. A scripted one (--exit-after) keeps --preview-scale, so that its counts are exact.
+constexpr double kInteractiveFrameBudgetMs = 66.0;
 
 ScriptedDrag parseDrag(const std::string& text) {
     const size_t colon = text.rfind(':');
@@ -59,6 +64,8 @@ int runView(const ViewOptions& o) {
     ViewerOptions options;
     options.exitAfter = o.exitAfter;
     options.previewScale = o.previewScale;
+    options.frameBudgetMs =
+        o.frameBudget >= 0.0 ? o.frameBudget : (o.exitAfter > 0 ? 0.0 : kInteractiveFrameBudgetMs);
     options.play = o.play;
     options.screenshot = o.screenshot;
     options.panelScreenshot = o.panelScreenshot;
@@ -100,12 +107,20 @@ int runView(const ViewOptions& o) {
         renderer.gradientUpdates(), renderer.octreeUpdates(), method.c_str(),
         renderer.transportRuns(method));
     // Means, for benchmarks of a scripted orbit (--exit-after).
-    if (s.frames > 0)
+    if (s.frames > 0) {
+        char scales[48];  // the changes' preview sizes: one, or a range under a frame budget
+        if (s.finestPreview == s.coarsestPreview)  // 0: no change after the first
+            std::snprintf(scales, sizeof(scales), "1/%d",
+                          s.finestPreview > 0 ? s.finestPreview : o.previewScale);
+        else
+            std::snprintf(scales, sizeof(scales), "1/%d to 1/%d", s.finestPreview,
+                          s.coarsestPreview);
         std::printf(
-            "frame time: first frame %.1f ms, then %.1f ms a frame at 1/%d size, %.1f ms "
+            "frame time: first frame %.1f ms, then %.1f ms a frame at %s size, %.1f ms "
             "a refinement\n",
-            s.firstMs, s.frames > 1 ? s.framesMs / (s.frames - 1) : 0.0, o.previewScale,
+            s.firstMs, s.frames > 1 ? s.framesMs / (s.frames - 1) : 0.0, scales,
             s.refinements > 0 ? s.refinementsMs / s.refinements : 0.0);
+    }
     return 0;
 }
 
@@ -147,6 +162,13 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "full size while nothing changes: 1, 2, 4 (default), 8 or 16; 1: always full "
                     "size")
         ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+    cmd->add_option("--frame-budget", o->frameBudget,
+                    "MS: after each change, render the next at the finest of those sizes whose "
+                    "picture takes at most MS ms (the viewing pass scaled by the pixel count; "
+                    "the rest does not depend on the size), starting from --preview-scale; 0: "
+                    "the preview scale stays. Default: 66 (15 frames a second) in a window, 0 "
+                    "with --exit-after")
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--screenshot", o->screenshot,
                     "with --exit-after: save the last frame here (the picture alone)");
     cmd->add_option("--panel-screenshot", o->panelScreenshot,

@@ -10,6 +10,7 @@
 #include "apps/view_panel.h"
 #include "core/camera.h"
 #include "render/image_resize.h"
+#include "render/preview_budget.h"
 
 namespace eikon::app {
 namespace {
@@ -34,6 +35,13 @@ int scaledSide(int full, int scale) {
     return std::max(1, int(std::lround(double(full) / double(scale))));
 }
 
+// The viewing pass's time among a frame's stages (the GPU's where it has one); 0: none.
+double viewStageMs(const std::vector<StageTime>& stages) {
+    for (const StageTime& s : stages)
+        if (s.name == "view") return s.gpuMs > 0 ? s.gpuMs : s.cpuMs;
+    return 0.0;
+}
+
 }  // namespace
 
 Viewer::Viewer(const Scene& scene, SceneDriver& driver, ViewHandles& handles,
@@ -47,6 +55,7 @@ Viewer::Viewer(const Scene& scene, SceneDriver& driver, ViewHandles& handles,
     state_.frame = scene.time.frameStart;
     state_.exposure = scene.render.exposure;
     state_.playing = options_.play;
+    state_.previewScale = options_.previewScale;
     if (options_.drag && options_.drag->handle.rfind("lights/", 0) == 0) {
         lights_.select(options_.drag->handle, scene.lights.size());
         state_.draggingLight = true;
@@ -239,7 +248,7 @@ void Viewer::render() {
     // A change starts at the preview size; no change refines the last picture, to full size.
     int scale = 1;
     if (s.dirty)
-        scale = options_.previewScale;
+        scale = s.previewScale;
     else if (s.scale > 1 && !playing())  // a playing picture is replaced, not refined
         scale = s.scale / 2;
     else
@@ -310,12 +319,18 @@ void Viewer::render() {
     const std::string title =
         "eikon view - frame " + std::to_string(s.frame) + " - " + size + " - " + stats;
     glfwSetWindowTitle(window_.window(), title.c_str());
-    if (s.dirty && s.frames == 0)
+    if (s.dirty && s.frames == 0) {
         ++s.frames, s.firstMs = ms;
-    else if (s.dirty)
+    } else if (s.dirty) {
         ++s.frames, s.framesMs += ms;
-    else
+        s.finestPreview = s.finestPreview == 0 ? scale : std::min(s.finestPreview, scale);
+        s.coarsestPreview = std::max(s.coarsestPreview, scale);
+        // The first frame loads and lights the scene: not what a change costs, so not a guide.
+        s.previewScale =
+            budgetedPreviewScale(scale, ms, viewStageMs(s.lastStages), options_.frameBudgetMs);
+    } else {
         ++s.refinements, s.refinementsMs += ms;
+    }
     ++s.rendered;
     s.scale = scale;
     s.dirty = false;

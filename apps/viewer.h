@@ -8,7 +8,8 @@
 // the window's size in each direction, shown enlarged (render/image_resize.h); while nothing
 // changes, each pass of the loop renders the same picture at twice the size of the last, up to
 // the full size. Light transport does not depend on the picture's size, so the refinements
-// reuse it (photons, light volumes, sweeps): they rerun the viewing pass alone.
+// reuse it (photons, light volumes, sweeps): they rerun the viewing pass alone. With a frame
+// budget, the preview's scale follows the frame times: the finest whose picture fits the budget.
 // Playing, the simulation steps on a thread of its own (pipeline/simulation_ahead.h) and the view
 // shows the latest frame it finished, so the simulation does not wait for the view (a scene with
 // ARAP handles steps in the viewer's thread, since a drag reads the driver's frame). A playing
@@ -51,8 +52,11 @@ struct ViewerOptions {
     std::string panelScreenshot;  // the window, the panel drawn over the picture
     std::optional<ScriptedDrag> drag;
     int previewScale = 4;  // a power of two; 1: every picture at full size
-    bool play = false;     // start playing the frames, as Space does
-    ViewEdits edits;       // --edit: made after the first frame, as a user's would be
+    // > 0: after each change, the next change's preview scale is chosen so that its picture
+    // takes about this many ms (render/preview_budget.h), starting from previewScale.
+    double frameBudgetMs = 0.0;
+    bool play = false;  // start playing the frames, as Space does
+    ViewEdits edits;    // --edit: made after the first frame, as a user's would be
 };
 
 // What the user has asked for so far, and what is on screen.
@@ -61,10 +65,13 @@ struct ViewerState {
     float exposure = 0.0f;
     bool dirty = true;  // the picture must be rendered again
     bool playing = false;
-    int frames = 0;       // pictures of a change (at the preview size)
-    int refinements = 0;  // pictures of no change, each at twice the size of the last
-    int rendered = 0;     // both
-    int scale = 1;        // the last picture was rendered at 1/scale of the full size
+    int frames = 0;        // pictures of a change (at the preview size)
+    int refinements = 0;   // pictures of no change, each at twice the size of the last
+    int rendered = 0;      // both
+    int scale = 1;         // the last picture was rendered at 1/scale of the full size
+    int previewScale = 1;  // the next change is rendered at 1/previewScale (set by the viewer)
+    // The finest and coarsest preview scales of the changes after the first, for the summary.
+    int finestPreview = 0, coarsestPreview = 0;
     // Times from the frame's inputs (a simulation step, a drag) to its picture: the first frame's
     // (it loads, resamples and lights the scene), then the sums of the later frames' and of the
     // refinements'.

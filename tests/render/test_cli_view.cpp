@@ -336,3 +336,37 @@ TEST_CASE("eikon view drags a light's gizmo, and prints the patch that keeps the
     CHECK(none.err.find("no light 'lights/1' (the scene has 1 light") != std::string::npos);
 #endif
 }
+
+// A frame budget (--frame-budget, render/preview_budget.h): after each change the next one is
+// rendered at the finest size whose predicted time fits. The outcomes that do not depend on the
+// machine's speed: a budget no frame can miss makes every change after the second full size (no
+// refinement left to do), one no frame can meet makes it 1/16 (four refinements to full size).
+TEST_CASE("eikon view's frame budget picks the preview's size from the frame times",
+          "[cli][view][progressive]") {
+#ifndef EIKON_XVFB_RUN
+    WARN("xvfb-run was not found when this test was built: the viewer cannot run");
+#else
+    const std::string dir = scratchDir("cli_view_budget");
+    const std::string common = "view " + quoted(sourcePath("data/scenes/homogeneous_cube.json")) +
+                               " --size 32x32 --backend cpu --exit-after 3";
+    const RunResult generous =
+        runEikon(common + " --frame-budget 1000000", dir, quoted(EIKON_XVFB_RUN) + " -a");
+    INFO("stdout:\n" << generous.out << "stderr:\n" << generous.err);
+    REQUIRE(generous.exitCode == 0);
+    // The first frame (loading) does not guide; the second, at 1/4, says full size fits.
+    CHECK(generous.out.find("frames rendered 3, refinements 0, ") != std::string::npos);
+    CHECK(generous.out.find(" a frame at 1/1 to 1/4 size, ") != std::string::npos);
+    const RunResult tight =
+        runEikon(common + " --frame-budget 0.000001", dir, quoted(EIKON_XVFB_RUN) + " -a");
+    INFO("stdout:\n" << tight.out << "stderr:\n" << tight.err);
+    REQUIRE(tight.exitCode == 0);
+    CHECK(tight.out.find("frames rendered 3, refinements 4, ") != std::string::npos);
+    CHECK(tight.out.find(" a frame at 1/4 to 1/16 size, ") != std::string::npos);
+    // Without a budget a scripted run keeps --preview-scale: two refinements from 1/4.
+    const RunResult fixed = runEikon(common, dir, quoted(EIKON_XVFB_RUN) + " -a");
+    INFO("stdout:\n" << fixed.out << "stderr:\n" << fixed.err);
+    REQUIRE(fixed.exitCode == 0);
+    CHECK(fixed.out.find("frames rendered 3, refinements 2, ") != std::string::npos);
+    checkOneLineError(runEikon(common + " --frame-budget -5", dir), "view: --frame-budget: ");
+#endif
+}
