@@ -384,26 +384,42 @@ struct DisplayCandidate {
     EGLDisplay display;
 };
 
+// Whether EGL device `device` is a software rasterizer (Mesa's llvmpipe device says so with
+// EGL_MESA_device_software); false where the driver cannot be asked.
+bool isSoftwareDevice(EGLDeviceEXT device, const char* clientExtensions) {
+    if (!hasExtension(clientExtensions, "EGL_EXT_device_query")) return false;
+    return hasExtension(eglQueryDeviceStringEXT(device, EGL_EXTENSIONS),
+                        "EGL_MESA_device_software");
+}
+
+// The displays to try, in order: hardware EGL devices first (an NVIDIA GPU with no display is
+// one, and with Mesa installed beside its driver, Mesa's surfaceless platform would otherwise
+// hand out llvmpipe on a machine with a GPU), then Mesa's surfaceless platform, then software
+// devices.
 std::vector<DisplayCandidate> platformDisplays(const char* clientExtensions) {
-    std::vector<DisplayCandidate> candidates;
-    if (!hasExtension(clientExtensions, "EGL_EXT_platform_base")) return candidates;
-    if (hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
-        candidates.push_back(
-            {"Mesa surfaceless platform", eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA,
-                                                                   EGL_DEFAULT_DISPLAY, nullptr)});
-    }
+    std::vector<DisplayCandidate> hardware, software;
+    if (!hasExtension(clientExtensions, "EGL_EXT_platform_base")) return hardware;
     if (hasExtension(clientExtensions, "EGL_EXT_platform_device") &&
         hasExtension(clientExtensions, "EGL_EXT_device_enumeration")) {
         EGLDeviceEXT devices[16];
         EGLint count = 0;
         if (eglQueryDevicesEXT(16, devices, &count)) {
             for (EGLint i = 0; i < count; ++i) {
-                candidates.push_back(
-                    {"EGL device " + std::to_string(i),
-                     eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr)});
+                const bool soft = isSoftwareDevice(devices[i], clientExtensions);
+                (soft ? software : hardware)
+                    .push_back(
+                        {"EGL device " + std::to_string(i) + (soft ? " (software)" : ""),
+                         eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr)});
             }
         }
     }
+    std::vector<DisplayCandidate> candidates = std::move(hardware);
+    if (hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
+        candidates.push_back(
+            {"Mesa surfaceless platform", eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA,
+                                                                   EGL_DEFAULT_DISPLAY, nullptr)});
+    }
+    candidates.insert(candidates.end(), software.begin(), software.end());
     return candidates;
 }
 

@@ -15,6 +15,7 @@
 #include "render/view_params.h"
 #include "render/volume_kernels_cpu.h"
 #include "support/linear_n2_medium.h"
+#include "support/test_paths.h"
 
 using namespace eikon;
 
@@ -105,7 +106,7 @@ TEST_CASE("curved view rays follow the closed-form parabola of a linear n^2 grad
 }
 
 TEST_CASE("n = 1 everywhere keeps rays straight and computes no gradient volume", "[curved]") {
-    Scene scene = loadScene(std::string(EIKON_SOURCE_DIR) + "/data/scenes/fog_sphere_spot.json");
+    Scene scene = loadScene(eikon::test::sourcePath("data/scenes/fog_sphere_spot.json"));
     scene.render.width = 24;
     scene.render.height = 18;
     for (Backend backend : {Backend::Cpu, Backend::Gpu}) {
@@ -129,7 +130,7 @@ TEST_CASE("n = 1 everywhere keeps rays straight and computes no gradient volume"
 }
 
 TEST_CASE("a glass sphere in front of lit fog: GPU equals the CPU twin", "[curved][gpu]") {
-    Scene scene = loadScene(std::string(EIKON_SOURCE_DIR) + "/data/scenes/fog_sphere_spot.json");
+    Scene scene = loadScene(eikon::test::sourcePath("data/scenes/fog_sphere_spot.json"));
     scene.render.width = 48;
     scene.render.height = 36;
     SourceSpec ball;

@@ -16,6 +16,7 @@
 #include "render/view_params.h"
 #include "render/volume_textures.h"
 #include "support/light_transport_setup.h"
+#include "support/test_paths.h"
 
 using namespace eikon;
 
@@ -228,7 +229,7 @@ TEST_CASE("light volumes rerun only when lights or extinction change", "[light]"
 
 TEST_CASE("both GPU sampling paths, 8-tap and texture-unit filtering, equal the CPU twin",
           "[light][gpu]") {
-    Scene scene = loadScene(std::string(EIKON_SOURCE_DIR) + "/data/scenes/fog_sphere_spot.json");
+    Scene scene = loadScene(eikon::test::sourcePath("data/scenes/fog_sphere_spot.json"));
     scene.render.width = 48;
     scene.render.height = 36;
     const Image cpu = FrameRenderer(scene, Backend::Cpu).render(0);

@@ -9,10 +9,11 @@
 #include "core/error.h"
 #include "render/gl_context.h"
 #include "render/shader_program.h"
+#include "support/test_paths.h"
 
 namespace {
 
-const std::string kFixtures = std::string(EIKON_SOURCE_DIR) + "/shaders/test/";
+const std::string kFixtures = eikon::test::sourcePath("shaders/test/");
 
 size_t occurrences(const std::string& text, const std::string& fragment) {
     size_t n = 0;
