@@ -1,5 +1,6 @@
 #include "apps/view_panel.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -171,6 +172,11 @@ void figureRows(const PanelFigures& f, PanelRequests& requests) {
     else
         ImGui::Text("frame %d, 1/%d size, %.0f ms (%.1f fps)", f.frame, f.scale, f.frameMs,
                     f.frameMs > 0 ? 1000.0 / f.frameMs : 0.0);
+    // The preview's budget (render/preview_budget.h): 0 keeps the preview scale where it is.
+    float budget = float(f.frameBudgetMs);
+    if (ImGui::SliderFloat("frame budget ms", &budget, 0.0f, 1000.0f, "%.0f",
+                           ImGuiSliderFlags_Logarithmic))
+        requests.frameBudgetMs = std::max(0.0, double(budget));
     if (ImGui::Button(f.playing ? "Pause" : "Play")) requests.togglePlay = true;
     ImGui::SameLine();
     if (ImGui::Button("Reset frames")) requests.reset = true;

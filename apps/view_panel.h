@@ -20,6 +20,7 @@ struct PanelFigures {
     bool playing = false;
     int scale = 1;                  // the picture was rendered at 1/scale of the full size
     double frameMs = 0.0;           // the last picture's time
+    double frameBudgetMs = 0.0;     // the preview's frame budget (0: the preview scale stays)
     std::vector<StageTime> stages;  // the last picture's stages
 };
 
@@ -32,9 +33,10 @@ struct PanelMemory {
 
 // What the user asked for in the panel this frame.
 struct PanelRequests {
-    bool edited = false;      // an edit was made: render again
-    bool togglePlay = false;  // the Play / Pause button
-    bool reset = false;       // back to the first frame
+    bool edited = false;          // an edit was made: render again
+    bool togglePlay = false;      // the Play / Pause button
+    bool reset = false;           // back to the first frame
+    double frameBudgetMs = -1.0;  // ≥ 0: the frame budget the slider was set to
 };
 
 // Lays out the panel (between UiOverlay::begin and end) for `shown`, the scene of the picture on

@@ -344,12 +344,14 @@ std::string Viewer::describeDragged() const {
 void Viewer::drawPanel() {
     ViewerState& s = state_;
     overlay_->begin();
-    const PanelFigures figures{s.frame, s.playing, s.scale, s.lastMs, s.lastStages};
+    const PanelFigures figures{s.frame,     s.playing, s.scale, s.lastMs, options_.frameBudgetMs,
+                               s.lastStages};
     const PanelRequests asked = drawViewPanel(renderer_.scene(), edits_, figures, panelMemory_);
     overlay_->end();
     if (asked.edited) s.dirty = true;
     if (asked.togglePlay) s.playing = !s.playing;
     if (asked.reset) s.frame = scene_.time.frameStart, s.dirty = true, s.playing = false;
+    if (asked.frameBudgetMs >= 0.0) options_.frameBudgetMs = asked.frameBudgetMs;
 }
 
 bool Viewer::present() {
