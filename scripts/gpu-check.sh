@@ -58,6 +58,14 @@ system_library() {
     return 1
 }
 
+# Whether the dynamic linker's cache has library NAME (a string test: `ldconfig -p | grep -q`
+# would fail under pipefail when grep stops reading early).
+has_library() {
+    local cache
+    cache=$(/sbin/ldconfig -p)
+    [[ "$cache" == *"$1 "* ]]
+}
+
 make_bundle() {
     local eikon="$build/apps/eikon" tests="$build/tests/eikon_tests_render"
     [ -x "$eikon" ] && [ -x "$tests" ] || bash scripts/build.sh
@@ -71,7 +79,7 @@ make_bundle() {
         system_library "$(basename "$lib")" || cp -L "$lib" "$stage/lib/"
     done
     for lib in libEGL.so.1 libOpenGL.so.0 libGLdispatch.so.0; do
-        path=$(/sbin/ldconfig -p | awk -v n="$lib" '$1 == n {print $NF; exit}')
+        path=$(/sbin/ldconfig -p | awk -v n="$lib" '$1 == n && !found {print $NF; found = 1}')
         [ -n "$path" ] && cp -L "$path" "$stage/lib/glvnd/"
     done
     git rev-parse HEAD >"$stage/COMMIT" 2>/dev/null || echo unknown >"$stage/COMMIT"
@@ -96,7 +104,7 @@ if [ -n "$from_bundle" ]; then
     eikon="$base/bin/eikon"
     tests="$base/bin/eikon_tests_render"
     libs="$base/lib"
-    /sbin/ldconfig -p | grep -q 'libEGL.so.1 ' || libs="$libs:$base/lib/glvnd"
+    has_library libEGL.so.1 || libs="$libs:$base/lib/glvnd"
     export LD_LIBRARY_PATH="$libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
     commit=$(cat "$base/COMMIT")
 else
@@ -112,8 +120,7 @@ export EIKON_TEST_SCRATCH_DIR="$out/scratch"
 [ -d "$root/../shared/data" ] && export EIKON_TEST_SHARED_DATA="$root/../shared/data"
 
 # glvnd finds a driver through its vendor files; a GPU container may lack NVIDIA's.
-if ! ls /usr/share/glvnd/egl_vendor.d/*nvidia* >/dev/null 2>&1 &&
-    /sbin/ldconfig -p | grep -q 'libEGL_nvidia.so.0 '; then
+if ! ls /usr/share/glvnd/egl_vendor.d/*nvidia* >/dev/null 2>&1 && has_library libEGL_nvidia.so.0; then
     printf '{"file_format_version": "1.0.0", "ICD": {"library_path": "libEGL_nvidia.so.0"}}\n' \
         >"$out/10_nvidia.json"
     export __EGL_VENDOR_LIBRARY_FILENAMES="$out/10_nvidia.json"
@@ -126,7 +133,7 @@ log="$out/log.txt"
 # 1. The renderer eikon's GPU path gets.
 probe=$("$eikon" render data/scenes/homogeneous_cube.json --backend gpu --size 32x32 \
     -o "$out/probe/frame.exr" 2>&1) || fail "the GPU path does not start: $(echo "$probe" | tail -n 3)"
-renderer=$(echo "$probe" | grep -m 1 '^GPU: ' | sed 's/^GPU: //')
+renderer=$(awk '/^GPU: / && !found {sub(/^GPU: /, ""); print; found = 1}' <<<"$probe")
 case "$renderer" in
     *llvmpipe* | *softpipe* | *swrast*)
         [ "$allow_software" = 1 ] ||
@@ -138,7 +145,7 @@ gpu_name=$(command -v nvidia-smi >/dev/null && nvidia-smi --query-gpu=name,drive
 echo "== tests: eikon_tests_render [gpu]" >>"$log"
 tests_status=0
 "$tests" "[gpu]" >>"$log" 2>&1 || tests_status=$?
-tests_line=$(grep -E '^(All tests passed|test cases:)' "$log" | tail -n 1)
+tests_line=$(grep -E "^(All tests passed|test cases:)" "$log" | tail -n 1 || true)
 
 # 3. The stages, on both backends, RUNS runs each.
 variant() { # resolution per_side width height -> scene path (sed: the machine may lack Python)
