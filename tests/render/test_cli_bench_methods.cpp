@@ -47,8 +47,10 @@ std::map<std::string, double> readErrors(const std::string& path) {
 
 }  // namespace
 
+// [release_only]: 396 s under the sanitizers (CI at 88 of its 90 minutes); the rows test below
+// runs every method and setting through the same bench there, at 25³.
 TEST_CASE("eikon bench methods --quick measures every method against the closed forms",
-          "[cli][bench][light_transport]") {
+          "[cli][bench][light_transport][release_only]") {
     const std::string dir = scratchDir("cli_bench_methods");
     const std::string tsv = dir + "/methods.tsv";
     // The wavefront (ten times the others' time) has its own test below.
