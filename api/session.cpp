@@ -5,6 +5,7 @@
 #include "api/shader_location.h"
 #include "core/dispersion.h"
 #include "core/error.h"
+#include "core/particle_color.h"
 #include "core/transfer_function.h"
 #include "pipeline/scene_input.h"
 #include "render/image.h"
@@ -208,8 +209,13 @@ Material Session::material(const std::string& name) const {
                  fromGlm(m.emission),
                  m.ior,
                  m.abbe,
+                 {},
+                 m.particleColor.map,
+                 {m.particleColor.range.x, m.particleColor.range.y},
                  {}};
     for (const glm::vec2& p : m.transfer) out.transfer.push_back({p.x, p.y});
+    for (const glm::vec4& p : m.particleColor.points)
+        out.particleColorPoints.push_back({p.x, p.y, p.z, p.w});
     return out;
 }
 
@@ -237,6 +243,19 @@ void Session::setMaterial(const Material& material) {
         const std::string problem = transferFunctionProblem(transfer);
         if (!problem.empty()) throw Error(where, "the transfer function " + problem);
     }
+    // As the scene's "particle_color" (core/scene_transfer.cpp).
+    ParticleColorSpec color;
+    color.map = material.particleColorMap;
+    color.range = glm::vec2(material.particleColorRange[0], material.particleColorRange[1]);
+    if (color.map.empty())
+        for (const std::array<float, 4>& p : material.particleColorPoints)
+            color.points.emplace_back(p[0], p[1], p[2], p[3]);
+    else if (!material.particleColorPoints.empty())
+        throw Error(where, "give a particle colour map or particle colour points, not both");
+    if (!color.empty()) {
+        const std::string problem = particleColorProblem(color);
+        if (!problem.empty()) throw Error(where, "the particle colour " + problem);
+    }
     m.absorption = toGlm(material.absorption);
     m.scattering = toGlm(material.scattering);
     m.g = material.anisotropy;
@@ -244,6 +263,7 @@ void Session::setMaterial(const Material& material) {
     if (m.gladstoneDale <= 0.0f) m.ior = material.ior;
     m.abbe = material.abbe;
     m.transfer = transfer;
+    m.particleColor = color;
 }
 
 }  // namespace eikon

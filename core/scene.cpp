@@ -391,6 +391,7 @@ MaterialSpec readMaterial(const Value& value) {
     }
     scene_detail::readDispersion(object, material, ior.has_value());
     scene_detail::readTransfer(object, material);
+    scene_detail::readParticleColor(object, material);
     material.fresnel = material.gladstoneDale == 0.0f;
     if (auto fresnel = object.optional("fresnel")) material.fresnel = fresnel->boolean();
     object.finish();

@@ -12,6 +12,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "core/bounds.h"
 #include "core/dispersion.h"
@@ -96,6 +97,15 @@ struct SourceSpec {
     std::string jsonPath;  // e.g. "/sources/2", for messages raised after parsing
 };
 
+// A material's particle colour (core/particle_color.h): a colour map by name over a range of its
+// field's values, or a piecewise-linear function through (value, r, g, b) points.
+struct ParticleColorSpec {
+    std::string map;                // a colour map by name (colorMapNames()); or empty, and:
+    std::vector<glm::vec4> points;  // (value, r, g, b), values increasing, linear colours
+    glm::vec2 range{0.0f, 1.0f};    // with `map`: the values its low and high ends stand for
+    bool empty() const { return map.empty() && points.empty(); }
+};
+
 // One material maps one scalar field f to optics, linearly per unit of f:
 // absorption α = f·absorption, scattering σ = f·scattering (extinction κ = σ + α, per scene unit),
 // emission = f·emission (radiance per scene unit), refractive index n = 1 + f·(ior − 1) (except
@@ -134,6 +144,9 @@ struct MaterialSpec {
     // of f itself; applied to the field's values at the render volume's voxels (pre-classified).
     // Empty: the field's value itself (f ↦ f).
     std::vector<glm::vec2> transfer;
+    // A particle colour (core/particle_color.h): what the material scatters and emits is tinted
+    // by color(f), f its field's own value (before `transfer`); empty: no tint.
+    ParticleColorSpec particleColor;
 
     // n in the red, green and blue channels (ior in each without dispersion).
     glm::vec3 channelIor() const { return channelIndices(ior, abbe); }

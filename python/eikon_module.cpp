@@ -154,7 +154,10 @@ PYBIND11_MODULE(eikon, m) {
         .def_readwrite("emission", &eikon::Material::emission)
         .def_readwrite("ior", &eikon::Material::ior)
         .def_readwrite("abbe", &eikon::Material::abbe)
-        .def_readwrite("transfer", &eikon::Material::transfer);
+        .def_readwrite("transfer", &eikon::Material::transfer)
+        .def_readwrite("particle_color_map", &eikon::Material::particleColorMap)
+        .def_readwrite("particle_color_range", &eikon::Material::particleColorRange)
+        .def_readwrite("particle_color_points", &eikon::Material::particleColorPoints);
 
     using eikon::Session;
     py::class_<Session>(m, "Session")

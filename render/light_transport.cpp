@@ -88,6 +88,12 @@ std::vector<unsigned char> transportInputsKey(const ViewSetup& setup,
     // method whose output depends on them appends them itself.
     shared::setReceiverCount(p, 0);
     for (shared::GpuReceiver& r : p.receivers) r = shared::GpuReceiver{};
+    // Particle colours tint only what the view sees (optics.h particleColorOverStep): a new colour
+    // map re-traces nothing.
+    for (glm::vec4& r : p.particleColorRanges) r = glm::vec4(0.0f);
+    for (glm::vec4& c : p.particleColors) c = glm::vec4(0.0f);
+    for (glm::vec4& c : p.particleColorIntegrals) c = glm::vec4(0.0f);
+    for (shared::GpuMaterial& m : p.materials) m.slot.w = 0;
     // Sized first and copied into, not appended to an empty vector: GCC 12 warns (a false
     // -Wstringop-overflow) on insert() into an empty vector at this size.
     std::vector<unsigned char> key(sizeof(p));

@@ -6,6 +6,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "core/error.h"
+#include "core/particle_color.h"
 #include "core/transfer_function.h"
 
 namespace eikon {
@@ -97,6 +98,23 @@ void packReceivers(const Scene& scene, const RenderVolume& volume, shared::GpuVi
     shared::setReceiverCount(p, int(scene.receivers.size()));
 }
 
+// Material m's particle colour table and range (GpuViewParams::particleColors, optics.h).
+void packParticleColor(const ParticleColorSpec& spec, int m, shared::GpuViewParams& p) {
+    const std::vector<glm::vec3> table = particleColorTable(spec, EK_PARTICLE_COLOR_TABLE);
+    // The pre-integration table in double, rounded once: ∫ over each linear piece is the mean of
+    // its ends.
+    glm::dvec3 integral(0.0);
+    for (int i = 0; i < EK_PARTICLE_COLOR_TABLE; ++i) {
+        if (i > 0)
+            integral += 0.5 * (glm::dvec3(table[size_t(i - 1)]) + glm::dvec3(table[size_t(i)]));
+        p.particleColors[m * EK_PARTICLE_COLOR_TABLE + i] = v4(table[size_t(i)]);
+        p.particleColorIntegrals[m * EK_PARTICLE_COLOR_TABLE + i] = v4(glm::vec3(integral));
+    }
+    const glm::vec2 range = particleColorRange(spec);
+    p.particleColorRanges[m] =
+        glm::vec4(range.x, float(EK_PARTICLE_COLOR_TABLE - 1) / (range.y - range.x), 0.0f, 0.0f);
+}
+
 // The clip planes as index-space ramps (GpuViewParams::clipPlanes): with h the voxel's extent
 // along the unit normal n, Σ|n_i| voxel_i, the ramp at index position q (world x = min + q∘voxel)
 // is d(x)/h + 1/2 with d the signed distance n·(x − point), so its coefficients are n∘voxel/h and
@@ -168,22 +186,33 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
     shared::setViewSurfaceSlope(p, scene.render.fresnel ? scene.render.surfaceSlope : 0.0f);
     packEnvironment(scene, environmentSize, p);
 
+    // Materials reading one field share its slot; one with a transfer function has its own, and
+    // its particle colour reads the field's own value from the field's slot.
+    const auto slotOf = [&](const std::string& slotName, size_t m) {
+        auto slot = std::find(setup.slotFields.begin(), setup.slotFields.end(), slotName);
+        if (slot != setup.slotFields.end()) return int(slot - setup.slotFields.begin());
+        if (setup.slotFields.size() == EK_MAX_MATERIALS)
+            throw Error(scene.path + ":/materials/" + std::to_string(m) + "/particle_color",
+                        "its colour reads field '" + scene.materials[m].field +
+                            "' as it is, beside its transfer function's amount, and the " +
+                            std::to_string(EK_MAX_MATERIALS) +
+                            " field slots of the render volume are taken");
+        setup.slotFields.push_back(slotName);
+        return int(setup.slotFields.size()) - 1;
+    };
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         const MaterialSpec& mat = scene.materials[m];
-        // Materials reading one field share its slot; one with a transfer function has its own.
-        const std::string slotName = materialSlotName(mat);
-        auto slot = std::find(setup.slotFields.begin(), setup.slotFields.end(), slotName);
-        if (slot == setup.slotFields.end())
-            slot = setup.slotFields.insert(setup.slotFields.end(), slotName);
+        const int slot = slotOf(materialSlotName(mat), m);
+        const int colorSlot = mat.particleColor.empty() ? -1 : slotOf(mat.field, m);
+        if (colorSlot >= 0) packParticleColor(mat.particleColor, int(m), p);
         shared::GpuMaterial& g = p.materials[m];
         g.absorption = v4(mat.absorption, mat.g);
         // w: what makes a Gladstone–Dale material's index exact (shaders/shared/material_index.h).
         g.scattering = v4(mat.scattering, mat.inverseAmbient());
         g.emission = v4(mat.emission, mat.indexSlope());
         // y: a sharp surface, only where the material refracts at all (fresnel.h).
-        g.slot = glm::ivec4(int(slot - setup.slotFields.begin()),
-                            mat.fresnel && mat.indexSlope() != 0.0f ? 1 : 0,
-                            clipMask(scene, mat.name), 0);
+        g.slot = glm::ivec4(slot, mat.fresnel && mat.indexSlope() != 0.0f ? 1 : 0,
+                            clipMask(scene, mat.name), colorSlot + 1);
     }
     for (size_t l = 0; l < scene.lights.size(); ++l) p.lights[l] = packLight(scene.lights[l]);
     // n ≡ 1 everywhere takes straight rays and needs no ∇n volume.

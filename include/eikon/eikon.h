@@ -81,6 +81,12 @@ struct Material {
     // Transfer function: [value, amount] points, the material reading amount(f) in place of its
     // field's value f; empty: f itself (docs/scene-format.md#materials, "transfer").
     std::vector<std::array<float, 2>> transfer;
+    // Particle colour (docs/scene-format.md#materials, "particle_color"): what the material
+    // scatters and emits is tinted by a colour map by name over particleColorRange of its field's
+    // values, or through [value, r, g, b] points (linear colours); both empty: no tint.
+    std::string particleColorMap;
+    std::array<float, 2> particleColorRange{0.0f, 1.0f};
+    std::vector<std::array<float, 4>> particleColorPoints;
 };
 
 // How far an image is from its reference, as `eikon regress` measures it (docs/regress.md): over

@@ -95,6 +95,23 @@ def test_camera_light_and_material_change_between_frames(tmp_path):
         session.set_material(fog)
     fog.transfer = []
     session.set_material(fog)
+    assert fog.particle_color_map == "" and fog.particle_color_points == []
+    plain = np.array(session.render(0).rgb)
+    fog.particle_color_points = [[0.0, 1.0, 0.0, 0.0], [1.0, 1.0, 0.0, 0.0]]  # red particles
+    session.set_material(fog)
+    red = np.array(session.render(0).rgb)
+    assert red[..., 1:].sum() < plain[..., 1:].sum()  # green and blue no longer scattered
+    assert red[..., 0].sum() == pytest.approx(plain[..., 0].sum(), rel=1e-5)
+    fog.particle_color_points = []
+    fog.particle_color_map = "viridiss"
+    with pytest.raises(eikon.Error, match="unknown colour map 'viridiss'"):
+        session.set_material(fog)
+    fog.particle_color_map = "inferno"
+    fog.particle_color_range = [0.0, 0.5]
+    session.set_material(fog)
+    assert session.material("fog").particle_color_range == [0.0, 0.5]
+    fog.particle_color_map = ""
+    session.set_material(fog)
     session.set_image_size(12, 8)
     smaller = session.render(0)
     with pytest.raises(eikon.Error, match="differ in size"):

@@ -11,6 +11,9 @@ EK_NAMESPACE_BEGIN
 #define EK_MAX_LIGHTS 4
 #define EK_MAX_RECEIVERS 4
 #define EK_MAX_CLIP_PLANES 4
+// Entries of a material's particle colour table (core/particle_color.h): a colour map's 256
+// entries, or a [value, r, g, b] function sampled at as many values.
+#define EK_PARTICLE_COLOR_TABLE 256
 
 #define EK_LIGHT_POINT 0
 #define EK_LIGHT_DIRECTIONAL 1
@@ -49,8 +52,10 @@ struct GpuMaterial {
     vec4 emission;
     // x: which field texture the material reads (materialSlot); y: 1 where the edge of its field
     // is a sharp surface that reflects part of the light crossing it (materialFresnel); z: bit k
-    // set = clip plane k cuts its opacity (materialClipMask, optics.h materialClipWeight); w:
-    // unused
+    // set = clip plane k cuts its opacity (materialClipMask, optics.h materialClipWeight); w: 0,
+    // or 1 + the field slot whose value its particle colour reads (materialColorSlot, optics.h
+    // particleColorOverStep): its own slot, or the raw field's where a transfer function maps its
+    // own
     ivec4 slot;
 };
 
@@ -113,6 +118,14 @@ struct GpuViewParams {
     GpuMaterial materials[EK_MAX_MATERIALS];
     GpuLight lights[EK_MAX_LIGHTS];
     GpuReceiver receivers[EK_MAX_RECEIVERS];
+    // Each material's particle colour (optics.h particleColorOverStep; used where materialColorSlot
+    // is set): x the value of its first entry, y entries per unit of value, (N − 1)/(hi − lo).
+    vec4 particleColorRanges[EK_MAX_MATERIALS];
+    // rgb: linear colour; EK_PARTICLE_COLOR_TABLE entries per material, evenly over its range.
+    vec4 particleColors[EK_MAX_MATERIALS * EK_PARTICLE_COLOR_TABLE];
+    // rgb: the pre-integration table, ∫ colour from the first entry to this one, in entries
+    // (optics.h particleColorIntegral); built with the colours (render/view_params.cpp).
+    vec4 particleColorIntegrals[EK_MAX_MATERIALS * EK_PARTICLE_COLOR_TABLE];
 };
 
 // Named reads of the packed members of GpuViewParams, the same in the shaders, the CPU twin and on
@@ -240,6 +253,9 @@ inline bool materialFresnel(const GpuMaterial& m) {
 inline int materialClipMask(const GpuMaterial& m) {
     return m.slot.z;  // bit k: clip plane k cuts its opacity
 }
+inline int materialColorSlot(const GpuMaterial& m) {
+    return m.slot.w - 1;  // the slot its particle colour reads; −1: no particle colour
+}
 inline int lightType(const GpuLight& l) {
     return int(l.position.w);  // EK_LIGHT_*
 }
@@ -280,6 +296,7 @@ inline int receiverMapStart(const GpuReceiver& r) {
 #define materialSlot(m) ((m).slot.x)
 #define materialFresnel(m) ((m).slot.y != 0)
 #define materialClipMask(m) ((m).slot.z)
+#define materialColorSlot(m) ((m).slot.w - 1)
 #define lightType(l) (int((l).position.w))
 #define lightVersineOuter(l) ((l).direction.w)
 #define lightVersineInner(l) ((l).radiance.w)

@@ -48,11 +48,66 @@ float clipWeight(int mask, vec3 indexPos, float reach) {
     return weight;
 }
 
-// Material m's field at `indexPos` as its opacity sees it: cut by its clip planes.
-float opacityField(int m, vec3 indexPos) {
-    const float f = sampleField(materialSlot(params.materials[m]), indexPos);
+// Material m's field value f at `indexPos` as its opacity sees it: cut by its clip planes.
+float clippedField(int m, vec3 indexPos, float f) {
     const int mask = materialClipMask(params.materials[m]);
     return mask == 0 ? f : f * clipWeight(mask, indexPos, 0.0f);
+}
+
+// Material m's field at `indexPos` as its opacity sees it: cut by its clip planes.
+float opacityField(int m, vec3 indexPos) {
+    return clippedField(m, indexPos, sampleField(materialSlot(params.materials[m]), indexPos));
+}
+
+// Particle colour (Magnus's thesis: the colour of the light a material's particles scatter and
+// emit, apart from the medium colour its absorption gives), read from material m's table
+// (core/particle_color.h): linear between its entries, flat beyond either end. Positions t are
+// in entries from the first, t = (value − range.x) · range.y.
+float particleColorPosition(int m, float value) {
+    const vec4 range = params.particleColorRanges[m];
+    return (value - range.x) * range.y;
+}
+
+// The colour at table position t (NaN: the first entry).
+vec3 particleColorAtPosition(int m, float t) {
+    const int base = m * EK_PARTICLE_COLOR_TABLE;
+    const float last = float(EK_PARTICLE_COLOR_TABLE - 1);
+    const float clamped = t > 0.0f ? min(t, last) : 0.0f;
+    const int i = min(int(clamped), EK_PARTICLE_COLOR_TABLE - 2);
+    return mix(vec3(params.particleColors[base + i]), vec3(params.particleColors[base + i + 1]),
+               clamped - float(i));
+}
+
+// ∫₀ᵗ colour dt' over table positions: the pre-integration table's entry plus the exact integral
+// of the linear piece it is in, and the end colours carried on beyond the table.
+vec3 particleColorIntegral(int m, float t) {
+    const int base = m * EK_PARTICLE_COLOR_TABLE;
+    const int lastEntry = EK_PARTICLE_COLOR_TABLE - 1;
+    if (!(t > 0.0f)) return (t > -3.0e38f ? t : 0.0f) * vec3(params.particleColors[base]);
+    if (t >= float(lastEntry))
+        return vec3(params.particleColorIntegrals[base + lastEntry]) +
+               (t - float(lastEntry)) * vec3(params.particleColors[base + lastEntry]);
+    const int i = min(int(t), lastEntry - 1);
+    const float w = t - float(i);
+    const vec3 c0 = vec3(params.particleColors[base + i]);
+    const vec3 c1 = vec3(params.particleColors[base + i + 1]);
+    return vec3(params.particleColorIntegrals[base + i]) + w * (c0 + (0.5f * w) * (c1 - c0));
+}
+
+// Below this span of table positions a step's mean colour is its midpoint's: the same for a
+// linear piece, and the difference of two integrals would lose digits (they reach 255 × colour).
+EK_CONST float EK_PREINTEGRATION_MIN_SPAN = 0.0625f;
+
+// Material m's particle colour over a view step along which the value it reads runs from `a` to
+// `b` through `mid` (pre-integrated: the mean of the colour over [a, b], so a colour band thinner
+// than the step is weighed by its width, not hit or missed by the midpoint; `mid` only where the
+// span is too short for that).
+vec3 particleColorOverStep(int m, float a, float mid, float b) {
+    const float ta = particleColorPosition(m, a);
+    const float tb = particleColorPosition(m, b);
+    if (!(abs(tb - ta) >= EK_PREINTEGRATION_MIN_SPAN))
+        return particleColorAtPosition(m, particleColorPosition(m, mid));
+    return (particleColorIntegral(m, tb) - particleColorIntegral(m, ta)) / (tb - ta);
 }
 
 vec3 extinctionAt(vec3 indexPos) {

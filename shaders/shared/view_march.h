@@ -97,11 +97,35 @@ EK_FORCE_INLINE bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(
     // Per-material scattering, kept for the phase function of each light below.
     vec3 sigma[EK_MAX_MATERIALS];
     bool scatters = false;
+    // The field a particle colour reads, at the step's two ends: sampled once for all the
+    // materials coloured by it (a scan's tissue classes all read the scan).
+    int endsSlot = -1;
+    float endA = 0.0f;
+    float endB = 0.0f;
     for (int m = 0; m < materialCount(params); ++m) {
-        const float field = opacityField(m, p);  // clip planes cut it (optics.h)
+        const int slot = materialSlot(params.materials[m]);
+        const float value = sampleField(slot, p);
+        const float field = clippedField(m, p, value);  // clip planes cut it (optics.h)
         sigma[m] = field * vec3(params.materials[m].scattering);
         kappa += field * vec3(params.materials[m].absorption) + sigma[m];
-        source += field * vec3(params.materials[m].emission);
+        vec3 emitted = field * vec3(params.materials[m].emission);
+        // A particle colour tints what the material scatters and emits, not what it takes away;
+        // it reads the field's own value (colorSlot) over the step.
+        const int colorSlot = materialColorSlot(params.materials[m]);
+        if (colorSlot >= 0) {
+            if (colorSlot != endsSlot) {
+                const vec3 halfStep = (0.5f * s) * dir / volumeVoxelSize();
+                endA = sampleField(colorSlot, p - halfStep);
+                endB = sampleField(colorSlot, p + halfStep);
+                endsSlot = colorSlot;
+            }
+            // The midpoint's value where the material's own slot holds it, else the ends' mean.
+            const float mid = colorSlot == slot ? value : 0.5f * (endA + endB);
+            const vec3 tint = particleColorOverStep(m, endA, mid, endB);
+            sigma[m] *= tint;
+            emitted *= tint;
+        }
+        source += emitted;
         scatters = scatters || sigma[m].x + sigma[m].y + sigma[m].z > 0.0f;
     }
     if (scatters && readsFluence(params)) source += fluenceInScattering(p, dir, sigma);

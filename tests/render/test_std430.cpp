@@ -37,8 +37,9 @@ static_assert(offsetof(GpuViewParams, materials) % 16 == 0 &&
                   offsetof(GpuViewParams, receivers) % 16 == 0,
               "struct arrays start 16-byte aligned in std430");
 static_assert(sizeof(GpuViewParams) ==
-                  offsetof(GpuViewParams, receivers) + EK_MAX_RECEIVERS * sizeof(GpuReceiver),
-              "GpuViewParams ends with receivers[]: no trailing padding");
+                  offsetof(GpuViewParams, particleColorIntegrals) +
+                      EK_MAX_MATERIALS * EK_PARTICLE_COLOR_TABLE * sizeof(glm::vec4),
+              "GpuViewParams ends with particleColorIntegrals[]: no trailing padding");
 
 template <typename T>
 struct GlType;
@@ -120,6 +121,11 @@ Layout viewParamsLayout() {
         EK_MEMBER(GpuViewParams, environmentHorizon), EK_MEMBER(GpuViewParams, environmentGround)};
     // An array of a basic type is one variable, named by its first element.
     fields["clipPlanes[0]"] = {offsetof(GpuViewParams, clipPlanes), GL_FLOAT_VEC4};
+    fields["particleColorRanges[0]"] = {offsetof(GpuViewParams, particleColorRanges),
+                                        GL_FLOAT_VEC4};
+    fields["particleColors[0]"] = {offsetof(GpuViewParams, particleColors), GL_FLOAT_VEC4};
+    fields["particleColorIntegrals[0]"] = {offsetof(GpuViewParams, particleColorIntegrals),
+                                           GL_FLOAT_VEC4};
     addArray(fields, "materials", offsetof(GpuViewParams, materials), sizeof(GpuMaterial),
              EK_MAX_MATERIALS, materialLayout());
     addArray(fields, "lights", offsetof(GpuViewParams, lights), sizeof(GpuLight), EK_MAX_LIGHTS,

@@ -56,10 +56,7 @@ TEST_CASE("Two classes of one field, each through its own function, each in its 
     // Dentin (values 0.45-0.7) absorbs red, enamel (above 0.85) blue. A shell of 0.5 around a
     // core of 1: the ray crosses 0.5 of dentin and 0.5 of enamel.
     Scene scene = slabScene();
-    scene.sources.push_back(
-        boxSource("density", glm::vec3(-0.5f), glm::vec3(0.5f), 0.5f, 0.0f, 0.125f));
-    scene.sources.push_back(
-        boxSource("density", glm::vec3(-0.25f), glm::vec3(0.25f), 1.0f, 0.0f, 0.125f));
+    eikon::test::addShellAroundCore(scene);
     scene.materials.push_back(material("dentin", "density", glm::vec3(2.0f, 0.0f, 0.0f)));
     scene.materials[0].transfer = {
         {0.0f, 0.0f}, {0.4f, 0.0f}, {0.45f, 1.0f}, {0.7f, 1.0f}, {0.75f, 0.0f}};

@@ -89,6 +89,16 @@ inline Scene transmittanceProbe() {
     return s;
 }
 
+// Field "density" as a scan's two tissue classes would give it: a box shell of value 0.5 over
+// [−0.5, 0.5]³ around a core of 1 over [−0.25, 0.25]³ (voxels of 0.125). A ray along an axis
+// crosses 0.5 of shell and 0.5 of core.
+inline void addShellAroundCore(Scene& s) {
+    s.sources.push_back(
+        boxSource("density", glm::vec3(-0.5f), glm::vec3(0.5f), 0.5f, 0.0f, 0.125f));
+    s.sources.push_back(
+        boxSource("density", glm::vec3(-0.25f), glm::vec3(0.25f), 1.0f, 0.0f, 0.125f));
+}
+
 constexpr double kPi = 3.14159265358979323846;
 
 inline double relativeError(double value, double expected) {
