@@ -195,8 +195,10 @@ TEST_CASE("eikon bench methods: every registered method, every named setting, ha
     CHECK(bad.err.find("--settings") != std::string::npos);
 }
 
+// [release_only]: 38 s under the sanitizers, where ctest's bench_integrators_quick runs the same
+// command.
 TEST_CASE("eikon bench integrators --quick: RK4 beats the paper's Euler tenfold, photon by photon",
-          "[cli][bench][photons]") {
+          "[cli][bench][photons][release_only]") {
     const std::string dir = scratchDir("cli_bench_integrators");
     const std::string tsv = dir + "/integrators.tsv";
     const auto r = runEikon("bench integrators --quick --tsv " + quoted(tsv), dir);
