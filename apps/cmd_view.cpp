@@ -31,6 +31,7 @@ struct ViewOptions {
     int exitAfter = 0;  // render this many frames (orbiting 10 degrees each), then quit
     int previewScale = 4;
     double frameBudget = -1.0;  // ms; < 0: kInteractiveFrameBudgetMs interactively, else none
+    std::string previewLight = "lighter";
     std::string screenshot;
     std::string panelScreenshot;
     std::string drag;  // "mesh/handle:DX,DY": drag that handle once, after the first frame
@@ -67,6 +68,7 @@ int runView(const ViewOptions& o) {
     options.frameBudgetMs =
         o.frameBudget >= 0.0 ? o.frameBudget : (o.exitAfter > 0 ? 0.0 : kInteractiveFrameBudgetMs);
     options.play = o.play;
+    options.lighterPreviews = o.previewLight == "lighter";
     options.screenshot = o.screenshot;
     options.panelScreenshot = o.panelScreenshot;
     if (!o.drag.empty()) options.drag = parseDrag(o.drag);
@@ -102,10 +104,10 @@ int runView(const ViewOptions& o) {
     const ViewerState& s = viewer.state();
     std::printf(
         "frames rendered %d, refinements %d, uploads %d, resamples %d, gradients %d, "
-        "octrees %d, %s runs %d\n",
+        "octrees %d, %s runs %d, lighter previews %d\n",
         s.frames, s.refinements, renderer.uploads(), renderer.resamples(),
         renderer.gradientUpdates(), renderer.octreeUpdates(), method.c_str(),
-        renderer.transportRuns(method));
+        renderer.transportRuns(method), renderer.previewTransportRuns());
     // Means, for benchmarks of a scripted orbit (--exit-after).
     if (s.frames > 0) {
         char scales[48];  // the changes' preview sizes: one, or a range under a frame budget
@@ -169,6 +171,13 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                     "the preview scale stays. Default: 66 (15 frames a second) in a window, 0 "
                     "with --exit-after")
         ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--preview-light", o->previewLight,
+                    "lighter (default): a preview that must trace the light again (a light, a "
+                    "material or the frame changed) traces it with the method's lighter settings "
+                    "(photons: half the photons per side; wavefront: patches split at twice the "
+                    "width), and the refinement to full size traces it as set; full: previews "
+                    "trace it as set")
+        ->check(CLI::IsMember({"lighter", "full"}));
     cmd->add_option("--screenshot", o->screenshot,
                     "with --exit-after: save the last frame here (the picture alone)");
     cmd->add_option("--panel-screenshot", o->panelScreenshot,

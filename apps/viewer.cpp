@@ -290,6 +290,8 @@ void Viewer::render() {
     }
     inputs.scene.render.width = scaledSide(width, scale);
     inputs.scene.render.height = scaledSide(height, scale);
+    // A change's preview may trace the light lighter; a refinement traces it as the scene says.
+    renderer_.setPreview(options_.lighterPreviews && s.dirty && scale > 1);
     const Image picture = renderer_.render(inputs);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

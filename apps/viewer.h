@@ -56,7 +56,10 @@ struct ViewerOptions {
     // takes about this many ms (render/preview_budget.h), starting from previewScale.
     double frameBudgetMs = 0.0;
     bool play = false;  // start playing the frames, as Space does
-    ViewEdits edits;    // --edit: made after the first frame, as a user's would be
+    // Previews that must trace the light again trace it with the method's lighter settings
+    // (FrameRenderer::setPreview); the refinement to full size traces it as set.
+    bool lighterPreviews = true;
+    ViewEdits edits;  // --edit: made after the first frame, as a user's would be
 };
 
 // What the user has asked for so far, and what is on screen.

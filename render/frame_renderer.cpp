@@ -193,10 +193,28 @@ Image FrameRenderer::render(int frame) {
     updateTransport(setupWithoutTransport, slotGrids);
     ViewSetup setup = setupWithoutTransport;
     transport_->configure(scene_, setup);
-    const TransportNeeds needs = transport_->needs();
     std::vector<unsigned char> transportKey = transport_->cacheKey(setup, slotGrids);
     const bool transportActive = !transportKey.empty();
-    const bool transportChanged = transportActive && transportKey != transportInputs_;
+    bool transportChanged = transportActive && transportKey != transportInputs_;
+    // A preview whose light must be traced again traces it lighter; `used` is what the view reads.
+    LightTransport* used = transport_.get();
+    std::vector<unsigned char> previewKey;
+    bool previewChanged = false;
+    if (preview_ && transportChanged) {
+        if (LightTransport* lighter = previewTransport()) {
+            ViewSetup previewSetup = setupWithoutTransport;
+            lighter->configure(scene_, previewSetup);
+            previewKey = lighter->cacheKey(previewSetup, slotGrids);
+            if (!previewKey.empty()) {
+                setup = std::move(previewSetup);
+                used = lighter;
+                transportChanged = false;
+                previewChanged = previewKey != previewInputs_;
+            }
+        }
+    }
+    const TransportNeeds needs = used->needs();
+    const bool runTransport = transportChanged || previewChanged;
     const bool curved = shared::curvedRays(setup.params);
     // The octree is built on the ∇n volume's n: a method that needs it needs that volume too.
     const bool wantGradient = curved || (transportActive && (needs.gradient || needs.octree));
@@ -230,9 +248,9 @@ Image FrameRenderer::render(int frame) {
             octreeCpu_ = computeOctreeCpu(setup, gradientCpu_, needs.octreeSettings, slotGrids);
             timer_->end();
         }
-        if (transportChanged)
-            transport_->runCpu({setup, slotGrids, gradientCpu_, octreeCpu_, timer_.get(),
-                                disperses ? &channelGradientsCpu_ : nullptr});
+        if (runTransport)
+            used->runCpu({setup, slotGrids, gradientCpu_, octreeCpu_, timer_.get(),
+                          disperses ? &channelGradientsCpu_ : nullptr});
     } else {
         timer_->begin("upload");
         textures_->update(slotGrids);
@@ -244,14 +262,20 @@ Image FrameRenderer::render(int frame) {
         if (disperses && (gradientChanged || !refractionGpu_->channelGradientTexture(0)))
             refractionGpu_->computeChannelGradients(setup, *textures_, *paramsBuffer_,
                                                     timer_.get());
-        if (transportChanged)
-            transport_->runGpu({setup, *textures_, *refractionGpu_, timer_.get(), disperses});
+        if (runTransport)
+            used->runGpu({setup, *textures_, *refractionGpu_, timer_.get(), disperses});
+    }
+    if (runTransport) {
+        lastTransportStats_ = used->stats();
+        transportSteps_ += lastTransportStats_.steps;
     }
     if (transportChanged) {
-        lastTransportStats_ = transport_->stats();
-        transportSteps_ += lastTransportStats_.steps;
         ++transportRuns_[transport_->name()];
         transportInputs_ = std::move(transportKey);
+    }
+    if (previewChanged) {
+        ++previewRuns_;
+        previewInputs_ = std::move(previewKey);
     }
     if (octreeChanged) {
         octreeInputs_ = std::move(octreeKey);
@@ -266,10 +290,10 @@ Image FrameRenderer::render(int frame) {
         timer_->begin("view");
         // Empty stand-ins by reference: `cond ? member : {}` would copy the member every frame.
         static const std::vector<glm::vec4> noGradient;
-        Image image = renderViewCpu(
-            setup, slotGrids, transportActive ? transport_->outputCpu() : TransportOutputCpu{},
-            curved ? gradientCpu_ : noGradient, &environment,
-            disperses ? &channelGradientsCpu_ : nullptr);
+        Image image = renderViewCpu(setup, slotGrids,
+                                    transportActive ? used->outputCpu() : TransportOutputCpu{},
+                                    curved ? gradientCpu_ : noGradient, &environment,
+                                    disperses ? &channelGradientsCpu_ : nullptr);
         timer_->end();
         return image;
     }
@@ -279,7 +303,7 @@ Image FrameRenderer::render(int frame) {
             dispersion.gradientTextures[c] = refractionGpu_->channelGradientTexture(c);
         dispersion.params = paramsBuffer_.get();
     }
-    return viewPass_->render(setup, *textures_, transportActive ? transport_.get() : nullptr,
+    return viewPass_->render(setup, *textures_, transportActive ? used : nullptr,
                              curved ? refractionGpu_->gradientTexture() : 0u, timer_.get(),
                              environment_->texture(), disperses ? &dispersion : nullptr);
 }
@@ -317,6 +341,23 @@ void FrameRenderer::updateTransport(const ViewSetup& base,
     if (!adopt) return;
     transport_ = std::move(fresh);
     transportInputs_.clear();
+}
+
+LightTransport* FrameRenderer::previewTransport() {
+    const std::string patch = transport_->previewPatch();
+    if (patch.empty()) {
+        previewTransport_.reset();
+        return nullptr;
+    }
+    Scene lighter = scene_;
+    patchLightTransport(lighter, patch);
+    if (!previewTransport_ || previewTransport_->name() != transport_->name() ||
+        lighter.render.lightTransport != previewSection_) {
+        previewTransport_ = makeLightTransport(lighter, device_);
+        previewSection_ = lighter.render.lightTransport;
+        previewInputs_.clear();
+    }
+    return previewTransport_.get();
 }
 
 int FrameRenderer::transportRuns(const std::string& method) const {

@@ -89,6 +89,14 @@ public:
     int transportRuns(const std::string& method) const;
     // The method the scene's render.light_transport chose (render/light_transport_registry.h).
     const LightTransport& lightTransport() const { return *transport_; }
+    // Preview pictures (the viewer's while something changes): a frame whose light transport
+    // must run again runs the method's lighter settings instead (LightTransport::previewPatch),
+    // and the full run's output and key stay as they were, for the picture that refines it
+    // (rendered with setPreview(false), it runs the full method). A camera move runs nothing
+    // either way and keeps the full output.
+    void setPreview(bool preview) { preview_ = preview; }
+    // How often the lighter preview run replaced the method's own (not in transportRuns).
+    int previewTransportRuns() const { return previewRuns_; }
     // Particle steps of every run so far, and the last run's counters.
     int64_t transportSteps() const { return transportSteps_; }
     TransportStats lastTransportStats() const { return lastTransportStats_; }
@@ -108,6 +116,9 @@ private:
     const DenseGrid& classifiedSlot(const std::string& slotName, const DenseGrid& field,
                                     const std::vector<glm::vec2>& transfer);
     void updateTransport(const ViewSetup& base, const std::vector<const DenseGrid*>& slotGrids);
+    // The method with its preview patch applied, made again when the patch changes; null when
+    // the method has nothing lighter.
+    LightTransport* previewTransport();
 
     Scene scene_;
     Backend backend_;
@@ -143,6 +154,12 @@ private:
     std::vector<unsigned char> gradientInputs_;   // what the ∇n volume was computed from
     std::vector<unsigned char> octreeInputs_;     // what the octree was computed from
     std::vector<unsigned char> transportInputs_;  // what the method's output was computed from
+    // The lighter run for previews (setPreview), made from the method's previewPatch().
+    bool preview_ = false;
+    std::unique_ptr<LightTransport> previewTransport_;
+    std::string previewSection_;                // the patched render.light_transport
+    std::vector<unsigned char> previewInputs_;  // what its output was computed from
+    int previewRuns_ = 0;
     std::unique_ptr<GpuStageTimer> timer_;
     int resamples_ = 0;
     int gradientUpdates_ = 0;

@@ -162,6 +162,11 @@ public:
     virtual std::vector<std::string> stages() const = 0;
     // The last run's energy accounting; none for a method that keeps none.
     virtual std::optional<EnergyBalance> energy() const { return std::nullopt; }
+    // A merge patch for render.light_transport (as patchLightTransport takes it) that makes a
+    // lighter run of this method, with these settings, for a preview picture: the viewer's, while
+    // a light, a material or the frame changes (FrameRenderer::setPreview). Empty: nothing
+    // lighter; the preview runs the method as set.
+    virtual std::string previewPatch() const { return {}; }
 };
 
 // The fluence rate (rgb, power per area) at every voxel centre, x fastest, that the output

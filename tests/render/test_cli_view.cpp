@@ -119,10 +119,13 @@ TEST_CASE("eikon view refines a preview to the full-size picture and reuses the 
                  quoted(EIKON_XVFB_RUN) + " -a");
     INFO("stdout:\n" << progressive.out << "stderr:\n" << progressive.err);
     REQUIRE(progressive.exitCode == 0);
-    // Two frames at 16x12, the second refined at 32x24 and 64x48: one photon trace for all four
-    // (and one resample of each of the two fields, the glass and the fog).
+    // Two frames at 16x12, the second refined at 32x24 and 64x48: the first frame's preview
+    // traces the photons lighter (half per side), the orbit traces nothing, and the first
+    // refinement traces them as set (and one resample of each of the two fields, the glass and
+    // the fog).
     CHECK(progressive.out.find("frames rendered 2, refinements 2, uploads 0, resamples 2, "
-                               "gradients 1, octrees 1, photons runs 1") != std::string::npos);
+                               "gradients 1, octrees 1, photons runs 1, lighter previews 1") !=
+          std::string::npos);
     CHECK(progressive.out.find("ms a frame at 1/4 size, ") != std::string::npos);
     const RunResult full = runEikon(
         common + " --exit-after 2 --preview-scale 1 --screenshot " + quoted(dir + "/full.png"), dir,
@@ -130,10 +133,11 @@ TEST_CASE("eikon view refines a preview to the full-size picture and reuses the 
     INFO("stdout:\n" << full.out << "stderr:\n" << full.err);
     REQUIRE(full.exitCode == 0);
     CHECK(full.out.find("frames rendered 2, refinements 0, uploads 0, resamples 2, gradients 1, "
-                        "octrees 1, photons runs 1") != std::string::npos);
+                        "octrees 1, photons runs 1, lighter previews 0") != std::string::npos);
     CHECK(readFile(dir + "/progressive.png") == readFile(dir + "/full.png"));
-    // Playing a live simulation: every frame is a change (the smoke moved), traced again at the
-    // preview size; the last frame, once the script stops playing, refines without a trace.
+    // Playing a live simulation: every frame is a change (the smoke moved), traced again, lighter,
+    // at the preview size; the last frame, once the script stops playing, refines with one trace
+    // as set.
     const RunResult playing =
         runEikon("view " + quoted(sourcePath("data/scenes/smoke_glass_mesh.json")) +
                      " --size 32x24 --backend cpu --play --exit-after 3",
@@ -141,7 +145,7 @@ TEST_CASE("eikon view refines a preview to the full-size picture and reuses the 
     INFO("stdout:\n" << playing.out << "stderr:\n" << playing.err);
     REQUIRE(playing.exitCode == 0);
     CHECK(playing.out.find("frames rendered 3, refinements 2, ") != std::string::npos);
-    CHECK(playing.out.find("photons runs 3") != std::string::npos);
+    CHECK(playing.out.find("photons runs 1, lighter previews 3") != std::string::npos);
     CHECK(playing.out.find("octrees 3,") != std::string::npos);  // the smoke's κ moved
     // A preview scale that is not a power of two up to 16 is refused in one line.
     checkOneLineError(runEikon(common + " --preview-scale 3", dir), "view: --preview-scale: ");
@@ -169,7 +173,18 @@ TEST_CASE("eikon view --edit reruns only the stages it touches, and its JSON Pat
     REQUIRE(light.exitCode == 0);
     CHECK(light.out.find("patch the scene with [{\"op\": \"add\", \"path\": "
                          "\"/lights/0/intensity\", \"value\": 45}]") != std::string::npos);
-    CHECK(light.out.find("gradients 1, octrees 1, photons runs 2") != std::string::npos);
+    // Each frame's preview traces lighter; the refinement of the edited frame traces as set.
+    CHECK(light.out.find("gradients 1, octrees 1, photons runs 1, lighter previews 2") !=
+          std::string::npos);
+    // Previews traced as set: twice the full trace, and the same refined picture.
+    const RunResult asSet =
+        runEikon("view " + quoted(scene) + common + quoted(dir + "/as_set.png") +
+                     " --edit /lights/0/intensity=45 --preview-light full",
+                 dir, xvfb);
+    INFO("stdout:\n" << asSet.out << "stderr:\n" << asSet.err);
+    REQUIRE(asSet.exitCode == 0);
+    CHECK(asSet.out.find("photons runs 2, lighter previews 0") != std::string::npos);
+    CHECK(readFile(dir + "/as_set.png") == readFile(dir + "/edited.png"));
 
     const RunResult index = runEikon("view " + quoted(scene) + common + quoted(dir + "/index.png") +
                                          " --edit /materials/1/ior=1.7 --edit /materials/1/ior=1.6",
@@ -179,7 +194,8 @@ TEST_CASE("eikon view --edit reruns only the stages it touches, and its JSON Pat
     // The later edit of one pointer replaces the earlier.
     CHECK(index.out.find("[{\"op\": \"add\", \"path\": \"/materials/1/ior\", \"value\": 1.6}]") !=
           std::string::npos);
-    CHECK(index.out.find("gradients 2, octrees 2, photons runs 2") != std::string::npos);
+    CHECK(index.out.find("gradients 2, octrees 2, photons runs 1, lighter previews 2") !=
+          std::string::npos);
 
     // The method: the picture after the edit is the plane sweep's.
     const RunResult method =
@@ -201,7 +217,7 @@ TEST_CASE("eikon view --edit reruns only the stages it touches, and its JSON Pat
     REQUIRE(settings.exitCode == 0);
     CHECK(settings.out.find("[{\"op\": \"add\", \"path\": \"/render/light_transport\", "
                             "\"value\": {\"photons\":{\"per_side\":64}}}]") != std::string::npos);
-    CHECK(settings.out.find("photons runs 2") != std::string::npos);
+    CHECK(settings.out.find("photons runs 1, lighter previews 2") != std::string::npos);
 
     // The patch applied by hand: the file says 45 where it said 30.
     std::string text = readFile(scene);
@@ -310,7 +326,7 @@ TEST_CASE("eikon view drags a light's gizmo, and prints the patch that keeps the
     CHECK(moved.y == Approx(-6.0f).margin(1e-2));
     CHECK(spot.out.find("[{\"op\": \"add\", \"path\": \"/lights/0/position\", \"value\": [") !=
           std::string::npos);
-    CHECK(spot.out.find("photons runs 2") != std::string::npos);
+    CHECK(spot.out.find("photons runs 1, lighter previews 2") != std::string::npos);
 
     const RunResult sun = runEikon("view " + quoted(sourcePath("data/scenes/water_pool.json")) +
                                        " --size 64x48 --backend cpu --exit-after 2 --drag "

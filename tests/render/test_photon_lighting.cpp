@@ -41,22 +41,9 @@ Scene photonLitSlab(glm::vec3 sigma, float irradiance) {
     return scene;
 }
 
-// Lit fog around a glass sphere (n = 1.5, soft rim) under a directional light: photons bend and
-// focus, the viewing rays bend too.
+// The glass sphere in fog (scene_builders.h) at 64 photons per side.
 Scene glassInFog() {
-    Scene scene;
-    scene.sources.push_back(boxSource("density", glm::vec3(-1.0f), glm::vec3(1.0f), 1.0f));
-    scene.sources.push_back(sphereSource("n", glm::vec3(0.0f, 0.2f, 0.0f), 0.45f, 1.0f, 0.1f));
-    scene.materials.push_back(
-        material("fog", "density", glm::vec3(0.05f), glm::vec3(0.6f, 0.5f, 0.4f), 0.2f));
-    eikon::MaterialSpec glass = material("glass", "n", glm::vec3(0.05f, 0.1f, 0.2f));
-    glass.ior = 1.5f;
-    scene.materials.push_back(glass);
-    scene.lights.push_back(directionalLight(glm::vec3(0.1f, -1.0f, 0.05f), 3.0f));
-    setVolume(scene, glm::vec3(-1.0f), glm::vec3(1.0f), glm::ivec3(32));
-    scene.camera = cameraAt(glm::vec3(0.0f, 0.3f, 4.0f), glm::vec3(0.0f), 45.0f);
-    scene.render.width = 40;
-    scene.render.height = 30;
+    Scene scene = eikon::test::glassSphereInFog();
     eikon::test::setPhotonSetting(scene, "per_side", 64);
     return scene;
 }

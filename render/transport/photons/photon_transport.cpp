@@ -1,5 +1,8 @@
 #include "render/transport/photons/photon_transport.h"
 
+#include <algorithm>
+#include <string>
+
 #include <glm/vector_relational.hpp>
 
 #include "core/memory_limit.h"
@@ -147,6 +150,12 @@ TransportStats PhotonTransport::stats() const {
 std::optional<EnergyBalance> PhotonTransport::energy() const {
     const PhotonTotals t = volumes().totals;  // a GPU run's: read back (benches and tests only)
     return EnergyBalance{t.emitted, t.extinguished, t.escaped, t.dropped, t.received};
+}
+
+std::string PhotonTransport::previewPatch() const {
+    const int side = std::max(settings_.trace.photonsPerSide / 2, 16);
+    if (side >= settings_.trace.photonsPerSide) return {};
+    return R"({"photons": {"per_side": )" + std::to_string(side) + "}}";
 }
 
 PhotonVolumes PhotonTransport::volumes() const {

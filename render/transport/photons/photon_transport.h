@@ -53,6 +53,9 @@ public:
     TransportStats stats() const override;
     std::vector<std::string> stages() const override { return {"photons", "smooth"}; }
     std::optional<EnergyBalance> energy() const override;
+    // Half the photons per side (a quarter of the photons, at least 16 per side): the fluence
+    // keeps its expected value, with twice the noise.
+    std::string previewPatch() const override;
 
     // The trace's settings with the scene's seed. The jitter depends on the seed, not on the
     // frame: a light and medium that stay still keep their photons, so noise does not flicker in

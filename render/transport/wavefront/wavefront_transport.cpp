@@ -1,5 +1,7 @@
 #include "render/transport/wavefront/wavefront_transport.h"
 
+#include <cstdio>
+
 #include "core/error.h"
 #include "core/memory_limit.h"
 #include "render/input_key.h"
@@ -137,6 +139,13 @@ std::optional<EnergyBalance> WavefrontTransport::energy() const {
     const PhotonTotals& t = cpu_.totals;
     return EnergyBalance{t.emitted,  t.extinguished, t.escaped,  t.dropped,
                          t.received, t.removed,      t.reflected};
+}
+
+std::string WavefrontTransport::previewPatch() const {
+    char patch[64];
+    std::snprintf(patch, sizeof(patch), R"({"wavefront": {"split_voxels": %.9g}})",
+                  double(settings_.trace.splitVoxels) * 2.0);
+    return patch;
 }
 
 }  // namespace eikon

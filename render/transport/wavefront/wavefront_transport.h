@@ -43,6 +43,9 @@ public:
     TransportStats stats() const override { return stats_; }
     std::vector<std::string> stages() const override { return {"wavefront", "smooth"}; }
     std::optional<EnergyBalance> energy() const override;
+    // Patches split at twice the width (the "coarse" bench setting's rule, relative to these
+    // settings): about a quarter of the patches where the wavefront spreads.
+    std::string previewPatch() const override;
 
     // The smoothed volumes and totals of the last run, for tests.
     const PhotonVolumes& volumes() const { return cpu_; }
