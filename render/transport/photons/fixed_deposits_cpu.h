@@ -49,7 +49,10 @@ private:
     size_t receiverSums_ = 0;
     glm::dvec4 scale_{0.0};
     glm::dvec3 totalScale_{0.0};
-    std::unique_ptr<std::atomic<int64_t>[]> deposits_;
+    struct FreeDeposits {
+        void operator()(std::atomic<int64_t>* p) const;
+    };
+    std::unique_ptr<std::atomic<int64_t>[], FreeDeposits> deposits_;
     std::unique_ptr<std::atomic<int64_t>[]> receiverDeposits_;
     FixedTotals totals_;
 };
