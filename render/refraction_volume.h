@@ -58,6 +58,17 @@ struct ChannelGradientsCpu {
 };
 ChannelGradientsCpu computeChannelGradientsCpu(const ViewSetup& setup,
                                                const std::vector<const DenseGrid*>& slotGrids);
+// Level 0 of the octree's min/max pyramid: per voxel (n_min, n_max, κ_min, κ_max) over the
+// windows of shaders/shared/octree.h pyramidLeafRange (n within two voxels, κ within one, clamped
+// at the faces), from the gradient volume's n and the field volumes' extinction (slotGrids; none:
+// κ ≡ 0). The twin computes them in separable passes, the same floats as pyramidLeafRange's
+// voxel by voxel, which octreeLeafRangesPerVoxelCpu runs (the tests' oracle; the GPU's way).
+std::vector<glm::vec4> octreeLeafRangesCpu(const ViewSetup& setup,
+                                           const RefractionVolumeCpu& gradient,
+                                           const std::vector<const DenseGrid*>& slotGrids);
+std::vector<glm::vec4> octreeLeafRangesPerVoxelCpu(const ViewSetup& setup,
+                                                   const RefractionVolumeCpu& gradient,
+                                                   const std::vector<const DenseGrid*>& slotGrids);
 // From the gradient volume's n (w) and, for settings.kappaTolerance, the extinction of the field
 // volumes (slotGrids, as for computeIndexGradientCpu; none: κ ≡ 0).
 RefractionVolumeCpu computeOctreeCpu(const ViewSetup& setup, const RefractionVolumeCpu& gradient,
