@@ -7,10 +7,12 @@
 
 #include "apps/bench_report.h"
 #include "apps/commands.h"
+#include "apps/huge_page_malloc.h"
 #include "apps/usage_errors.h"
 #include "core/error.h"
 
 int main(int argc, char** argv) {
+    eikon::app::restartWithHugePageMalloc(argv);
     CLI::App app{"Eikon: relighting of refractive, absorbing and scattering media"};
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string("eikon ") + EIKON_VERSION + " (OpenVDB " +
