@@ -64,10 +64,10 @@ ScriptedDrag parseDrag(const std::string& text) {
 
 // The viewer renders frames of the same sizes again and again. glibc hands blocks above its mmap
 // threshold back to the kernel when they are freed, so each frame's volumes (4 MB a vec4 volume
-// at 64³) faulted their pages in again, about 10 µs a 4 KiB page in the VM this was measured in:
-// a third of a light move's photon stage. With the threshold at its largest (32 MB) and no
-// trimming, freed blocks stay in the heap for the next frame; the viewer's memory stays at its
-// peak, which every frame reaches anyway.
+// at 64³) faulted their pages in again, about 10 µs a 4 KiB page in the VM this was measured in
+// (a light drag's photon stage: 102 ms, 86 ms with this; medians of five). With the threshold at
+// its largest (32 MB) and no trimming, freed blocks stay in the heap for the next frame; the
+// viewer's memory stays at its peak, which every frame reaches anyway.
 void keepFreedMemoryForTheNextFrame() {
     mallopt(M_MMAP_THRESHOLD, 32 << 20);
     mallopt(M_TRIM_THRESHOLD, INT_MAX);

@@ -109,9 +109,9 @@ void buildPyramidLevels(glm::ivec3 res, std::vector<glm::vec4>& pyramid) {
 
 }  // namespace
 
-// The shared code evaluates κ's range at 27 voxels and n at 125 for every voxel: 84 % of the
-// κ-aware octree's time at 64³ went there. Here each voxel's κ range is evaluated once, then
-// three passes of five.
+// The shared code evaluates κ's range at 27 voxels and n at 125 for every voxel. Here each
+// voxel's κ range is evaluated once, then three passes of five: the octree stage took 1.7-1.8×
+// less time at 64³ and 128³ (BENCHMARKS.md).
 std::vector<glm::vec4> octreeLeafRangesCpu(const ViewSetup& setup,
                                            const RefractionVolumeCpu& gradient,
                                            const std::vector<const DenseGrid*>& slotGrids) {

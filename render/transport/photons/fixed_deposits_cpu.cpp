@@ -14,8 +14,9 @@ namespace {
 
 // The deposit volume, zeroed, on 2 MiB pages where the kernel gives them (transparent huge pages
 // on request: `madvise` is Debian's default). Zeroing it on 4 KiB pages took 31-46 ms at 64³
-// (12.6 MB, 3,000 page faults in this VM), a third of a light move's photon stage; a huge page
-// is one fault. Without them (another kernel setting) it is the same memory on small pages.
+// (12.6 MB, 3,000 page faults in this VM), a quarter of the photon stage at 64 photons a side; a
+// huge page is one fault. Without them (another kernel setting) it is the same memory on small
+// pages.
 std::atomic<int64_t>* allocateZeroedDeposits(size_t count) {
     static_assert(std::atomic<int64_t>::is_always_lock_free &&
                   sizeof(std::atomic<int64_t>) == sizeof(int64_t));
