@@ -167,6 +167,10 @@ void printTransportStats(const FrameRenderer& renderer, const std::vector<StageT
             method.c_str(), static_cast<long long>(last.particlesSplit),
             static_cast<long long>(last.splitsRefused), static_cast<long long>(last.particlesTorn),
             static_cast<long long>(last.particlesRemoved));
+    if (last.viewSteps > 0)
+        std::printf("  %s: interleaved view, %lld view ray steps; %lld samples behind the sweep\n",
+                    method.c_str(), static_cast<long long>(last.viewSteps),
+                    static_cast<long long>(last.viewSamplesBehind));
     if (const std::optional<EnergyBalance> e = renderer.lightTransport().energy()) {
         // Shares of the power that entered the volume.
         const double in = std::max(channelSum(e->emitted), 1e-300);
@@ -201,6 +205,10 @@ FrameCounters frameCounters(const FrameRenderer& renderer, int64_t stepsBefore) 
             c["splits_refused"] = double(last.splitsRefused);
             c["particles_torn"] = double(last.particlesTorn);
             c["particles_removed"] = double(last.particlesRemoved);
+        }
+        if (last.viewSteps > 0) {
+            c["view_steps"] = double(last.viewSteps);
+            c["view_samples_behind"] = double(last.viewSamplesBehind);
         }
         if (const std::optional<EnergyBalance> e = renderer.lightTransport().energy()) {
             c["energy_emitted"] = channelSum(e->emitted);

@@ -214,7 +214,10 @@ Image FrameRenderer::render(int frame) {
         }
     }
     const TransportNeeds needs = used->needs();
-    const bool runTransport = transportChanged || previewChanged;
+    // A method that views as it lights (the plane sweep's interleaved view) runs every frame, in
+    // the view stage, whatever changed: its image depends on the camera too.
+    const bool interleaved = transportActive && used->viewsInterleaved();
+    const bool runTransport = (transportChanged || previewChanged) && !interleaved;
     const bool curved = shared::curvedRays(setup.params);
     // The octree is built on the ∇n volume's n: a method that needs it needs that volume too.
     const bool wantGradient = curved || (transportActive && (needs.gradient || needs.octree));
@@ -270,7 +273,7 @@ Image FrameRenderer::render(int frame) {
         transportSteps_ += lastTransportStats_.steps;
     }
     if (transportChanged) {
-        ++transportRuns_[transport_->name()];
+        if (!interleaved) ++transportRuns_[transport_->name()];  // counted where it runs, below
         transportInputs_ = std::move(transportKey);
     }
     if (previewChanged) {
@@ -286,6 +289,14 @@ Image FrameRenderer::render(int frame) {
         ++gradientUpdates_;
     }
 
+    if (backend_ == Backend::Cpu && interleaved) {  // it times its stages, the view's included
+        Image image = used->runWithViewCpu(
+            {setup, slotGrids, gradientCpu_, octreeCpu_, timer_.get(), nullptr}, &environment);
+        lastTransportStats_ = used->stats();
+        transportSteps_ += lastTransportStats_.steps;
+        ++transportRuns_[used->name()];
+        return image;
+    }
     if (backend_ == Backend::Cpu) {
         timer_->begin("view");
         // Empty stand-ins by reference: `cond ? member : {}` would copy the member every frame.

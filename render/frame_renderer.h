@@ -85,7 +85,8 @@ public:
     int uploads() const;
     int resamples() const { return resamples_; }
     // How often the light-transport method `method` ran: only when its cache key changed
-    // (lights, extinction, n, the volume or its settings; a camera move reruns nothing).
+    // (lights, extinction, n, the volume or its settings; a camera move reruns nothing), but
+    // every frame for a method that views as it lights (LightTransport::viewsInterleaved).
     int transportRuns(const std::string& method) const;
     // The method the scene's render.light_transport chose (render/light_transport_registry.h).
     const LightTransport& lightTransport() const { return *transport_; }

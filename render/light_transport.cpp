@@ -19,6 +19,10 @@ StageScope::~StageScope() {
     if (timer_) timer_->end();
 }
 
+Image LightTransport::runWithViewCpu(const TransportInputsCpu&, const Image*) {
+    throw Error("light transport \"" + name() + "\"", "renders no view of its own");
+}
+
 TransportOutputCpu fluenceOutputOf(const std::vector<glm::vec4>& fluence,
                                    const std::vector<glm::vec4>& direction,
                                    const std::vector<glm::vec4>& receiverMap) {

@@ -32,6 +32,7 @@
 
 #include "core/dense_grid.h"
 #include "core/scene.h"
+#include "render/image.h"
 #include "render/refraction_volume.h"
 #include "render/view_params.h"
 
@@ -64,6 +65,10 @@ struct TransportStats {
     int64_t splitsRefused = 0;
     int64_t particlesTorn = 0;
     int64_t particlesRemoved = 0;
+    // Methods that view as they light (viewsInterleaved): view ray steps taken, and samples of
+    // rays that turned back against the sweep, read from the nearest light plane still held.
+    int64_t viewSteps = 0;
+    int64_t viewSamplesBehind = 0;
 };
 
 // Where the light of the last run went, per colour channel in power, for methods that account
@@ -167,6 +172,13 @@ public:
     // a light, a material or the frame changes (FrameRenderer::setPreview). Empty: nothing
     // lighter; the preview runs the method as set.
     virtual std::string previewPatch() const { return {}; }
+    // Whether, for the setup configure() wrote last, the method renders the frame's image itself
+    // in one pass with its light (the plane sweep's interleaved view): the frame renderer then
+    // calls runWithViewCpu every frame instead of runCpu and the view pass.
+    virtual bool viewsInterleaved() const { return false; }
+    // Lights and views in one pass; stats() as after runCpu. Only where viewsInterleaved().
+    // `environment`: as renderViewCpu's.
+    virtual Image runWithViewCpu(const TransportInputsCpu& in, const Image* environment);
 };
 
 // The fluence rate (rgb, power per area) at every voxel centre, x fastest, that the output

@@ -3,6 +3,8 @@
 // functions are included inside struct bodies, so that what the shaders read as globals —
 // `params`, `fetchVolume`, `fetchPreviousSlice` — are members here and the code needs no change
 // between the two sides.
+#include <atomic>
+#include <cmath>
 #include <cstddef>
 
 #include "core/ray_integrator.h"
@@ -22,6 +24,30 @@ struct VolumeAccessCpu {
     // the view reads them (readsFluence).
     const vec4* fluence = nullptr;
     const vec4* fluenceDirection = nullptr;
+    // The plane sweep's interleaved view (render/transport/plane_sweep/plane_sweep_view.h) keeps
+    // of the fluence volumes only the two slices across `axis` swept last, slice k at plane
+    // k & 1 of the two (u fastest); lookups elsewhere along the axis take the nearer of the two.
+    // axis < 0: whole volumes.
+    struct FluenceWindow {
+        int axis = -1, u = 0, w = 0;
+        int first = 0, last = 0;  // the slices held (first ≤ last)
+        size_t planeTexels = 0;
+        // The sweep: toward +axis (order 1) or −axis; `swept` slices so far.
+        int order = 1, swept = 0;
+        // Samples taken from slices already dropped (a view ray that turned back against the
+        // sweep), read from the nearer slice held; counted.
+        std::atomic<int64_t>* behind = nullptr;
+    };
+    FluenceWindow window = {};
+
+    size_t fluenceIndex(ivec3 v) const {
+        if (window.axis < 0) return voxelIndex(v);
+        const int k = v[window.axis] < window.first  ? window.first
+                      : v[window.axis] > window.last ? window.last
+                                                     : v[window.axis];
+        return size_t(k & 1) * window.planeTexels +
+               size_t(v[window.w]) * size_t(params.resolution[window.u]) + size_t(v[window.u]);
+    }
 
     size_t voxelIndex(ivec3 v) const {
         return (size_t(v.z) * size_t(params.resolution.y) + size_t(v.y)) *
@@ -34,8 +60,8 @@ struct VolumeAccessCpu {
     }
     vec4 fetchLightVoxel(int light, ivec3 v) const { return lights[light][voxelIndex(v)]; }
     vec4 fetchGradientVoxel(ivec3 v) const { return gradient[voxelIndex(v)]; }
-    vec4 fetchFluenceVoxel(ivec3 v) const { return fluence[voxelIndex(v)]; }
-    vec4 fetchFluenceDirectionVoxel(ivec3 v) const { return fluenceDirection[voxelIndex(v)]; }
+    vec4 fetchFluenceVoxel(ivec3 v) const { return fluence[fluenceIndex(v)]; }
+    vec4 fetchFluenceDirectionVoxel(ivec3 v) const { return fluenceDirection[fluenceIndex(v)]; }
 
     // The shared files are order-sensitive in GLSL; keep their order here too.
     // clang-format off
@@ -57,6 +83,23 @@ struct ViewKernelCpu : VolumeAccessCpu {
     // The receiver map (render/receiver_map.h), when a receiver reads the fluence.
     const vec4* receiverMap = nullptr;
     vec4 fetchReceiverTexel(int index) const { return receiverMap[size_t(index)]; }
+    // Whether a view ray may shade a sample at volume index position p (view_march.h): always,
+    // but in the plane sweep's interleaved view, where the two slices its fluence lookups read
+    // (sampleVolume's) must have been swept.
+    bool viewSampleReady(vec3 p) const {
+        if (window.axis < 0) return true;
+        const int last = params.resolution[window.axis] - 1;
+        const int base = int(std::floor(p[window.axis] - 0.5f));
+        const int k0 = base < 0 ? 0 : base > last ? last : base;
+        const int k1 = base + 1 < 0 ? 0 : base + 1 > last ? last : base + 1;
+        // The place of a slice in the sweep's order.
+        const int r0 = window.order > 0 ? k0 : last - k0;
+        const int r1 = window.order > 0 ? k1 : last - k1;
+        if ((r0 > r1 ? r0 : r1) >= window.swept) return false;
+        if ((r0 < r1 ? r0 : r1) < window.swept - 2 && window.behind)
+            window.behind->fetch_add(1, std::memory_order_relaxed);
+        return true;
+    }
 
     // clang-format off
 #include "shaders/shared/environment.h"

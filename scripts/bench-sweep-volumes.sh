@@ -10,12 +10,19 @@
 #   RUNS > 1 prints each run (take the median yourself: they are interleaved so that a changing
 #   load hits every row alike). EIKON=path/to/eikon picks the binary; BACKENDS="cpu gpu" adds
 #   the GPU path (llvmpipe here: the software driver's cost, not a GPU's).
+#   COMBOS lists method:backend rows; method plane_sweep+interleaved is the plane sweep with the
+#   interleaved view ("view": "interleaved": no fluence volume; its "method ms" is the sweep's
+#   share of the frame, its "view ms" the rays'). It needs light from the camera's side:
+#   LIGHT=front turns the scene's light there for every row (LIGHT=scene keeps ct_tooth.json's,
+#   which comes from behind the scan).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SIZES=${1:-"512 768"}
 RUNS=${2:-1}
 EIKON=${EIKON:-build/apps/eikon}
 BACKENDS=${BACKENDS:-"cpu gpu"}
+COMBOS=${COMBOS:-"plane_sweep:cpu plane_sweep:gpu photons:cpu"}
+LIGHT=${LIGHT:-scene}
 VOLUMES=../shared/data/volumes
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
@@ -28,15 +35,22 @@ SCANS=(
 
 scene() {  # name file spacing origin method -> path
     local path="$OUT/$1_$5.json"
-    /usr/bin/python3 - "$path" "$(realpath "$VOLUMES/$2")" "$3" "$4" "$5" "$OUT" <<'PY'
+    /usr/bin/python3 - "$path" "$(realpath "$VOLUMES/$2")" "$3" "$4" "$5" "$OUT" "$LIGHT" <<'PY'
 import json, sys
-path, scan, spacing, origin, method, out = sys.argv[1:7]
+path, scan, spacing, origin, method, out, light = sys.argv[1:8]
 scene = json.load(open("data/scenes/ct_tooth.json"))
 source = scene["sources"][0]
 source["file"] = scan
 source["spacing"] = [float(spacing)] * 3
 source["origin"] = [float(v) for v in origin.split(",")]
+view = "volume"
+if method.endswith("+interleaved"):
+    method, view = method[: -len("+interleaved")], "interleaved"
 scene["render"]["light_transport"] = {"method": method}
+if view == "interleaved":
+    scene["render"]["light_transport"]["plane_sweep"] = {"view": "interleaved"}
+if light == "front":  # from the camera's side (the camera at y = -4.2 looks along +y)
+    scene["lights"][0]["direction"] = [-0.5, 0.77, -0.4]
 scene["output"] = {"directory": out + "/images", "name": "frame", "png": True, "exr": False}
 json.dump(scene, open(path, "w"))
 PY
@@ -54,7 +68,7 @@ for run in $(seq "$RUNS"); do
     for entry in "${SCANS[@]}"; do
         read -r name file spacing origin <<<"$entry"
         for size in $SIZES; do
-            for combo in plane_sweep:cpu plane_sweep:gpu photons:cpu; do
+            for combo in $COMBOS; do
                 method=${combo%%:*}
                 backend=${combo##*:}
                 [[ " $BACKENDS " == *" $backend "* ]] || continue
@@ -69,7 +83,7 @@ for run in $(seq "$RUNS"); do
                 volume=$(awk '/^frame 0:/ { print $NF }' "$stats")
                 read -r wall rss <<<"$(awk '/^TIME/ { print $2, $3 }' "$stats")"
                 # The photons' own stage and the octree only they need.
-                method_ms=$(echo "$(stage_ms "$stats" "$method") + $(stage_ms "$stats" octree)" | bc -l)
+                method_ms=$(echo "$(stage_ms "$stats" "${method%+*}") + $(stage_ms "$stats" octree)" | bc -l)
                 printf "| %s | %s | %s² | %s | %s | %.0f | %.0f | %.2f | %.0f |\n" "$name" \
                     "$volume" "$size" "$method" "$backend" "$method_ms" \
                     "$(stage_ms "$stats" view)" "$wall" "$(echo "$rss / 1024" | bc -l)"

@@ -11,6 +11,10 @@ layout(std430, binding = EK_SSBO_RECEIVER_MAP) readonly buffer ReceiverMapBlock 
 };
 vec4 fetchReceiverTexel(int index) { return receiverTexels[index]; }
 
+// Every sample is ready: the volumes are whole (the plane sweep's interleaved view, whose are not,
+// runs on the CPU twin: render/transport/plane_sweep/plane_sweep_view.h).
+bool viewSampleReady(vec3 p) { return true; }
+
 #include "shared/environment.h"
 #include "shared/material_index.h"
 #include "shared/fresnel.h"

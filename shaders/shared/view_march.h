@@ -162,11 +162,163 @@ struct KeptReflection {
     vec4 weight;
 };
 
+// A curved ray being traced (traceCurvedRayReflecting): where it is, what it has gathered, and
+// its walk across sharp surfaces. A state of its own so that a trace can stop between steps and
+// go on later (the plane sweep's interleaved viewing, plane_sweep_view.h, advances every pixel's
+// ray only as far as the light planes swept so far).
+struct CurvedRay {
+    vec3 x;  // where it is
+    vec3 v;  // n dx/ds
+    vec3 exitDir;
+    vec3 radiance;
+    vec3 transmittance;
+    vec4 walk;  // the walk across sharp surfaces (fresnel.h)
+    vec4 surfaceNormal;
+    vec3 crossingStart;
+    KeptReflection first;
+    KeptReflection second;
+    float h;             // the step length
+    float surfaceSlope;  // per scene unit; 0: no walk
+    int kept;
+    int keep;
+    int steps;  // taken so far, of at most maxSteps
+    int maxSteps;
+    bool shade;
+};
+
+// How curvedRayAdvance stopped.
+#define EK_RAY_ENDED 1  // it left the volume, stopped on a receiver or the medium went degenerate
+#define EK_RAY_WAITS 2  // its next sample is not ready (viewSampleReady)
+
+// The ray that traceCurvedRayReflecting traces from `entry`, before its first step.
+CurvedRay curvedRayStart(vec3 entry, vec3 dir, bool shade, float onSurface, int keep, vec3 radiance,
+                         vec3 transmittance) {
+    CurvedRay r;
+    r.h = viewStep(params);
+    r.x = entry;
+    const vec4 gEntry = sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(entry));
+    r.v = dir * (onSurface > 0.0f ? onSurface : gEntry.w);
+    r.exitDir = dir;
+    r.radiance = radiance;
+    r.transmittance = transmittance;
+    r.first.weight = r.second.weight = vec4(0.0f);
+    r.first.origin = r.second.origin = r.first.dir = r.second.dir = vec4(0.0f);
+    r.kept = 0;
+    r.keep = keep;
+    r.shade = shade;
+    // The walk across sharp surfaces (fresnel.h), its slope per scene unit.
+    const vec3 voxel = volumeVoxelSize();
+    r.surfaceSlope = shade && anySurfaces()
+                         ? viewSurfaceSlope(params) / min(voxel.x, min(voxel.y, voxel.z))
+                         : 0.0f;
+    r.walk = vec4(0.0f);
+    if (r.surfaceSlope > 0.0f) {
+        const float nSurface = surfaceIndexAt(worldToVolumeIndex(entry));
+        r.walk = onSurface > 0.0f ? surfaceWalkStartOnSurface(gEntry.w, nSurface)
+                                  : surfaceWalkStart(gEntry.w, nSurface);
+    }
+    r.surfaceNormal = vec4(0.0f);
+    r.crossingStart = entry;
+    // A ray trapped by total internal reflection would circle forever: bound the path at 16
+    // crossings of the volume.
+    const ivec3 res = volumeResolution();
+    r.maxSteps = 16 * (res.x + res.y + res.z);
+    r.steps = 0;
+    return r;
+}
+
+// Steps the ray by the ray equation, steps of length h (viewIntegrator, ray_equation.h), the
+// last cut at the volume's face or a receiver, with accumulateStep on each segment while the ray
+// shades, until it ends (EK_RAY_ENDED) or the next segment's shading sample is not ready
+// (viewSampleReady, from the includer: EK_RAY_WAITS). A waiting ray is left as it was before
+// that step: advanced again later, it takes the same step, to the bit. One loop with breaks, as
+// the trace was written before it could wait: a step function called in a loop, with its early
+// returns, took llvmpipe 10 % longer to compile view.comp.
+int curvedRayAdvance(EK_INOUT(CurvedRay) r) {
+    int status = EK_RAY_ENDED;
+    for (; r.steps < r.maxSteps; ++r.steps) {
+        vec3 next = r.x;
+        vec3 vNext = r.v;
+        if (!rayAdvance(viewIntegrator(params), next, vNext, r.h,
+                        rayStepStart(viewIntegrator(params), r.x, r.v)))
+            break;  // a degenerate n; nothing more to trace
+        const vec3 delta = next - r.x;
+        float s = length(delta);
+        if (!(s > 0.0f)) break;  // a degenerate n; nothing more to trace
+        const vec3 segmentDir = delta / s;
+        const float tExit = intersectVolume(r.x, segmentDir).y;
+        const bool leaves = tExit < s;
+        if (leaves) {
+            // v at the face, not at the step's end beyond it (photons.h, photonStep).
+            const float inside = max(tExit, 0.0f) / s;
+            vNext = r.v + inside * (vNext - r.v);
+            s = max(tExit, 0.0f);
+            next = r.x + segmentDir * s;
+        }
+        float tHit;
+        bool front;
+        const int receiver = receiverCrossing(r.x, next, tHit, front);
+        if (receiver >= 0) {
+            next = receiverHitPoint(receiver, r.x, next, tHit);
+            s *= tHit;
+        }
+        if (r.shade) {
+            const vec3 mid = 0.5f * (r.x + next);
+            const vec3 midIndex = worldToVolumeIndex(mid);
+            if (!viewSampleReady(midIndex)) {
+                status = EK_RAY_WAITS;
+                break;
+            }
+            if (!accumulateStep(mid, midIndex, segmentDir, s, r.radiance, r.transmittance))
+                r.shade = false;  // opaque: keep tracing only for the exit point
+        }
+        if (r.shade && r.surfaceSlope > 0.0f && s > 0.0f) {
+            const vec3 q = worldToVolumeIndex(next);
+            const float n1 = r.walk.y;  // where a crossing ending here began
+            const float transmitted =
+                surfaceWalkStep(r.walk, r.surfaceNormal, sampleVolume(EK_GRADIENT_SLOT, q),
+                                surfaceIndexAt(q), vNext, r.surfaceSlope * s, r.surfaceSlope);
+            if (n1 == 0.0f && r.walk.y != 0.0f) r.crossingStart = r.x;  // a crossing began
+            if (transmitted < 1.0f) {
+                const vec3 weight = r.transmittance * (1.0f - transmitted);
+                const vec3 mirror = surfaceMirrorDirection(vNext, vec3(r.surfaceNormal), n1);
+                if (r.kept < r.keep) {
+                    KeptReflection k;
+                    k.origin = vec4(r.crossingStart, 0.0f);
+                    k.dir = vec4(mirror, n1);
+                    k.weight = vec4(weight, 0.0f);
+                    if (r.kept == 0)
+                        r.first = k;
+                    else
+                        r.second = k;
+                    ++r.kept;
+                } else {
+                    r.radiance += weight * environmentRadiance(mirror);
+                }
+                r.transmittance *= transmitted;
+            }
+        }
+        r.x = next;
+        r.v = vNext;
+        r.exitDir = normalize(r.v);
+        if (receiver >= 0) {  // opaque: nothing behind it shows
+            if (r.shade) r.radiance += r.transmittance * receiverRadiance(receiver, r.x, front);
+            r.transmittance = vec3(0.0f);
+            ++r.steps;
+            break;
+        }
+        if (leaves) {
+            ++r.steps;
+            break;
+        }
+    }
+    return status;
+}
+
 // Traces a curved ray from `entry` (on or inside the volume) with unit direction `dir`, one step
-// of the ray equation of length h per iteration (viewIntegrator, ray_equation.h), until it
-// leaves the volume or the medium goes degenerate; the last step is cut at the face. Calls
-// accumulateStep on every segment when `shade`. Returns the exit point; exitDir gets the
-// direction the ray leaves with.
+// of the ray equation of length h per iteration (curvedRayAdvance), until it leaves the volume or
+// the medium goes degenerate; the last step is cut at the face. Calls accumulateStep on every
+// segment when `shade`. Returns the exit point; exitDir gets the direction the ray leaves with.
 //
 // With `shade` and viewSurfaceSlope > 0 it reflects at the sharp surfaces it crosses (fresnel.h;
 // Ihrke et al. 2007 eqs. 2 and 5): once a crossing ends with transmittance factor t < 1, the
@@ -183,100 +335,14 @@ vec3 traceCurvedRayReflecting(vec3 entry, vec3 dir, bool shade, float onSurface,
                               EK_INOUT(vec3) radiance, EK_INOUT(vec3) transmittance,
                               EK_OUT(vec3) exitDir, EK_OUT(KeptReflection) first,
                               EK_OUT(KeptReflection) second) {
-    const float h = viewStep(params);
-    vec3 x = entry;
-    const vec4 gEntry = sampleVolume(EK_GRADIENT_SLOT, worldToVolumeIndex(x));
-    vec3 v = dir * (onSurface > 0.0f ? onSurface : gEntry.w);
-    exitDir = dir;
-    first.weight = second.weight = vec4(0.0f);
-    first.origin = second.origin = first.dir = second.dir = vec4(0.0f);
-    int kept = 0;
-    // The walk across sharp surfaces (fresnel.h), its slope per scene unit.
-    const vec3 voxel = volumeVoxelSize();
-    const float surfaceSlope = shade && anySurfaces()
-                                   ? viewSurfaceSlope(params) / min(voxel.x, min(voxel.y, voxel.z))
-                                   : 0.0f;
-    vec4 walk = vec4(0.0f);
-    if (surfaceSlope > 0.0f) {
-        const float nSurface = surfaceIndexAt(worldToVolumeIndex(x));
-        walk = onSurface > 0.0f ? surfaceWalkStartOnSurface(gEntry.w, nSurface)
-                                : surfaceWalkStart(gEntry.w, nSurface);
-    }
-    vec4 surfaceNormal = vec4(0.0f);
-    vec3 crossingStart = x;
-    // A ray trapped by total internal reflection would circle forever: bound the path at 16
-    // crossings of the volume.
-    const ivec3 res = volumeResolution();
-    const int maxSteps = 16 * (res.x + res.y + res.z);
-    for (int i = 0; i < maxSteps; ++i) {
-        vec3 next = x;
-        vec3 vNext = v;
-        if (!rayAdvance(viewIntegrator(params), next, vNext, h,
-                        rayStepStart(viewIntegrator(params), x, v)))
-            break;  // a degenerate n; nothing more to trace
-        const vec3 delta = next - x;
-        float s = length(delta);
-        if (!(s > 0.0f)) break;  // a degenerate n; nothing more to trace
-        const vec3 segmentDir = delta / s;
-        const float tExit = intersectVolume(x, segmentDir).y;
-        const bool leaves = tExit < s;
-        if (leaves) {
-            // v at the face, not at the step's end beyond it (photons.h, photonStep).
-            const float inside = max(tExit, 0.0f) / s;
-            vNext = v + inside * (vNext - v);
-            s = max(tExit, 0.0f);
-            next = x + segmentDir * s;
-        }
-        float tHit;
-        bool front;
-        const int receiver = receiverCrossing(x, next, tHit, front);
-        if (receiver >= 0) {
-            next = receiverHitPoint(receiver, x, next, tHit);
-            s *= tHit;
-        }
-        if (shade) {
-            const vec3 mid = 0.5f * (x + next);
-            if (!accumulateStep(mid, worldToVolumeIndex(mid), segmentDir, s, radiance,
-                                transmittance))
-                shade = false;  // opaque: keep tracing only for the exit point
-        }
-        if (shade && surfaceSlope > 0.0f && s > 0.0f) {
-            const vec3 q = worldToVolumeIndex(next);
-            const float n1 = walk.y;  // where a crossing ending here began
-            const float transmitted =
-                surfaceWalkStep(walk, surfaceNormal, sampleVolume(EK_GRADIENT_SLOT, q),
-                                surfaceIndexAt(q), vNext, surfaceSlope * s, surfaceSlope);
-            if (n1 == 0.0f && walk.y != 0.0f) crossingStart = x;  // a crossing began this step
-            if (transmitted < 1.0f) {
-                const vec3 weight = transmittance * (1.0f - transmitted);
-                const vec3 mirror = surfaceMirrorDirection(vNext, vec3(surfaceNormal), n1);
-                if (kept < keep) {
-                    KeptReflection r;
-                    r.origin = vec4(crossingStart, 0.0f);
-                    r.dir = vec4(mirror, n1);
-                    r.weight = vec4(weight, 0.0f);
-                    if (kept == 0)
-                        first = r;
-                    else
-                        second = r;
-                    ++kept;
-                } else {
-                    radiance += weight * environmentRadiance(mirror);
-                }
-                transmittance *= transmitted;
-            }
-        }
-        x = next;
-        v = vNext;
-        exitDir = normalize(v);
-        if (receiver >= 0) {  // opaque: nothing behind it shows
-            if (shade) radiance += transmittance * receiverRadiance(receiver, x, front);
-            transmittance = vec3(0.0f);
-            break;
-        }
-        if (leaves) break;
-    }
-    return x;
+    CurvedRay r = curvedRayStart(entry, dir, shade, onSurface, keep, radiance, transmittance);
+    curvedRayAdvance(r);
+    radiance = r.radiance;
+    transmittance = r.transmittance;
+    exitDir = r.exitDir;
+    first = r.first;
+    second = r.second;
+    return r.x;
 }
 
 // traceCurvedRayReflecting with every reflection seeing the environment.
@@ -285,6 +351,67 @@ vec3 traceCurvedRay(vec3 entry, vec3 dir, bool shade, EK_INOUT(vec3) radiance,
     KeptReflection unusedFirst, unusedSecond;
     return traceCurvedRayReflecting(entry, dir, shade, 0.0f, 0, radiance, transmittance, exitDir,
                                     unusedFirst, unusedSecond);
+}
+
+// A straight ray being integrated (integrateViewRay), in steps of h along t from where it enters
+// the volume; like CurvedRay, a state that can stop between steps.
+struct StraightRay {
+    vec3 origin;
+    vec3 dir;
+    vec3 radiance;
+    vec3 transmittance;
+    float tStart;  // where the ray enters the volume
+    float tEnd;    // and leaves it
+    int step;
+    int steps;
+};
+
+StraightRay straightRayStart(vec3 origin, vec3 dir, vec2 span) {
+    StraightRay r;
+    r.origin = origin;
+    r.dir = dir;
+    r.radiance = vec3(0.0f);
+    r.transmittance = vec3(1.0f);
+    r.tStart = span.x;
+    r.tEnd = span.y;
+    r.step = 0;
+    r.steps = min(int(ceil((span.y - span.x) / viewStep(params))), EK_MAX_STEPS);
+    return r;
+}
+
+// Steps a straight ray, each step exactly clipped, until it ends or waits (curvedRayAdvance's
+// contract).
+int straightRayAdvance(EK_INOUT(StraightRay) r) {
+    const float h = viewStep(params);
+    int status = EK_RAY_ENDED;
+    for (; r.step < r.steps; ++r.step) {
+        const float t0 = r.tStart + float(r.step) * h;
+        const float tEnd = min(t0 + h, r.tEnd);
+        float tHit;
+        bool front;
+        const int receiver =
+            receiverCrossing(r.origin + r.dir * t0, r.origin + r.dir * tEnd, tHit, front);
+        const float t1 = receiver >= 0 ? t0 + (tEnd - t0) * tHit : tEnd;
+        const vec3 x = r.origin + r.dir * (0.5f * (t0 + t1));
+        const vec3 p = worldToVolumeIndex(x);
+        if (!viewSampleReady(p)) {
+            status = EK_RAY_WAITS;
+            break;
+        }
+        if (!accumulateStep(x, p, r.dir, t1 - t0, r.radiance, r.transmittance)) {
+            ++r.step;
+            break;
+        }
+        if (receiver >= 0) {  // opaque: nothing behind it shows
+            const vec3 hit =
+                receiverHitPoint(receiver, r.origin + r.dir * t0, r.origin + r.dir * tEnd, tHit);
+            r.radiance += r.transmittance * receiverRadiance(receiver, hit, front);
+            r.transmittance = vec3(0.0f);
+            ++r.step;
+            break;
+        }
+    }
+    return status;
 }
 
 // Radiance reaching the camera along a ray, and the ray's transmittance through the volume.
@@ -331,26 +458,10 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
         }
         return radiance;
     }
-    const float h = viewStep(params);
-    const int steps = min(int(ceil((span.y - span.x) / h)), EK_MAX_STEPS);
-    for (int i = 0; i < steps; ++i) {
-        const float t0 = span.x + float(i) * h;
-        const float tEnd = min(t0 + h, span.y);
-        float tHit;
-        bool front;
-        const int receiver = receiverCrossing(origin + dir * t0, origin + dir * tEnd, tHit, front);
-        const float t1 = receiver >= 0 ? t0 + (tEnd - t0) * tHit : tEnd;
-        const vec3 x = origin + dir * (0.5f * (t0 + t1));
-        if (!accumulateStep(x, worldToVolumeIndex(x), dir, t1 - t0, radiance, transmittance)) break;
-        if (receiver >= 0) {  // opaque: nothing behind it shows
-            const vec3 hit =
-                receiverHitPoint(receiver, origin + dir * t0, origin + dir * tEnd, tHit);
-            radiance += transmittance * receiverRadiance(receiver, hit, front);
-            transmittance = vec3(0.0f);
-            break;
-        }
-    }
-    return radiance + transmittance * environmentRadiance(dir);
+    StraightRay r = straightRayStart(origin, dir, span);
+    straightRayAdvance(r);
+    transmittance = r.transmittance;
+    return r.radiance + r.transmittance * environmentRadiance(dir);
 }
 
 // The unit direction of the viewing ray through pixel (px, py)'s centre, row 0 at the top

@@ -113,27 +113,25 @@ glm::dvec2 softLightRadius(const shared::GpuViewParams& p, const PlaneSweepPlan&
                       softKernelRadius(variance / (h[plan.w] * h[plan.w])));
 }
 
-// Sums one voxel-centre plane of a light into the output volumes (sweepDepositTexel).
-void depositPlane(const shared::GpuPlaneSweep& sweep, const PlaneSweepPlan& plan, int slice,
+// Sums one voxel-centre plane of a light into a slice of the fluence and direction volumes
+// (sweepDepositTexel): texel (a, b) into element a·strideU + b·strideW.
+void depositPlane(const shared::GpuPlaneSweep& sweep, const PlaneSweepPlan& plan,
                   const std::vector<glm::vec4>& light, const std::vector<glm::vec4>& direction,
-                  shared::PlaneSweepKernelCpu& k, PlaneSweepResultCpu& out) {
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, plan.size.y), [&](const tbb::blocked_range<int>& r) {
-            for (int b = r.begin(); b != r.end(); ++b)
-                for (int a = 0; a < plan.size.x; ++a) {
-                    const size_t t = size_t(b) * size_t(plan.size.x) + size_t(a);
-                    glm::vec3 fluence, weighted;
-                    if (!k.sweepDepositTexel(sweep, light[t], direction[t], fluence, weighted))
-                        continue;
-                    glm::ivec3 voxel;
-                    voxel[plan.axis] = slice;
-                    voxel[plan.u] = a;
-                    voxel[plan.w] = b;
-                    const size_t i = k.voxelIndex(voxel);
-                    out.fluence[i] += glm::vec4(fluence, 0.0f);
-                    out.direction[i] += glm::vec4(weighted, 0.0f);
-                }
-        });
+                  shared::PlaneSweepKernelCpu& k, glm::vec4* fluence, glm::vec4* weighted,
+                  size_t strideU, size_t strideW) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, plan.size.y),
+                      [&](const tbb::blocked_range<int>& r) {
+                          for (int b = r.begin(); b != r.end(); ++b)
+                              for (int a = 0; a < plan.size.x; ++a) {
+                                  const size_t t = size_t(b) * size_t(plan.size.x) + size_t(a);
+                                  glm::vec3 f, w;
+                                  if (!k.sweepDepositTexel(sweep, light[t], direction[t], f, w))
+                                      continue;
+                                  const size_t i = size_t(a) * strideU + size_t(b) * strideW;
+                                  fluence[i] += glm::vec4(f, 0.0f);
+                                  weighted[i] += glm::vec4(w, 0.0f);
+                              }
+                      });
 }
 
 // The most irradiance a texel may hold: the light's brightest irradiance on the volume's box
@@ -155,16 +153,25 @@ float irradianceCeiling(const shared::GpuViewParams& p, int l, const PlaneSweepP
 
 }  // namespace
 
-PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int l, const PlaneSweepSettings& s) {
+SweepAxis dominantAxis(glm::vec3 d) {
+    const glm::vec3 a = glm::abs(d);
+    SweepAxis s;
+    s.axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    s.order = d[s.axis] >= 0.0f ? 1 : -1;
+    return s;
+}
+
+PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int l, const PlaneSweepSettings& s,
+                              const SweepAxis* forced) {
     const shared::GpuViewParams& p = setup.params;
     const shared::GpuLight& light = p.lights[l];
     const glm::vec3 d = travelDirection(light, p);
     PlaneSweepPlan plan;
-    const glm::vec3 a = glm::abs(d);
-    plan.axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    const SweepAxis axis = forced ? *forced : dominantAxis(d);
+    plan.axis = axis.axis;
     plan.u = (plan.axis + 1) % 3;
     plan.w = (plan.axis + 2) % 3;
-    plan.order = d[plan.axis] >= 0.0f ? 1 : -1;
+    plan.order = axis.order;
     const glm::ivec3 res(p.resolution);
     plan.size = glm::ivec2(res[plan.u], res[plan.w]);
     plan.depth = res[plan.axis];
@@ -246,6 +253,130 @@ std::vector<glm::vec4> planeSweepReceiverMap(const ViewSetup& setup, const int64
     return map;
 }
 
+struct LightSweepCpu::Impl {
+    Impl(const ViewSetup& s, const PlaneSweepPlan& p, const PlaneSweepSettings& ss)
+        : setup(s), plan(p), settings(ss), kernel{{s.params}} {}
+    const ViewSetup& setup;
+    PlaneSweepPlan plan;
+    PlaneSweepSettings settings;
+    shared::PlaneSweepKernelCpu kernel;
+    std::vector<glm::vec4> light, direction, nextLight, nextDirection, trace;
+    shared::GpuPlaneSweep sweep{};  // the last plane's
+    int64_t texelsLost = 0;
+};
+
+LightSweepCpu::LightSweepCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
+                             const LightSweepSpec& spec, const PlaneSweepSettings& settings,
+                             SweepReceiversCpu& receivers)
+    : impl_(std::make_unique<Impl>(setup, spec.plan, settings)) {
+    const PlaneSweepPlan& plan = spec.plan;
+    shared::PlaneSweepKernelCpu& k = impl_->kernel;
+    for (size_t s = 0; s < slotGrids.size(); ++s) k.fields[s] = slotGrids[s]->values.data();
+    k.gradient = spec.gradient->data();
+    k.sweepChannels = spec.channels;
+    k.receiverSums = receivers.sums.get();
+    k.receiverScale = receivers.scale;
+    const size_t texels = size_t(plan.size.x) * size_t(plan.size.y);
+    for (auto* buffer : {&impl_->light, &impl_->direction, &impl_->nextLight, &impl_->nextDirection,
+                         &impl_->trace})
+        buffer->assign(texels, glm::vec4(0.0f));
+    k.sweepLight = impl_->light.data();
+    k.sweepDirection = impl_->direction.data();
+    k.sweepTrace = impl_->trace.data();
+    k.planeWidth = plan.size.x;
+}
+
+LightSweepCpu::~LightSweepCpu() = default;
+
+const PlaneSweepPlan& LightSweepCpu::plan() const {
+    return impl_->plan;
+}
+int64_t LightSweepCpu::texelsLost() const {
+    return impl_->texelsLost;
+}
+size_t LightSweepCpu::bufferBytes() const {
+    return 5 * impl_->trace.size() * sizeof(glm::vec4);
+}
+
+void LightSweepCpu::advance(int j) {
+    Impl& m = *impl_;
+    const PlaneSweepPlan& plan = m.plan;
+    m.sweep = planeSweepStep(m.setup, plan, m.settings, j);
+    shared::PlaneSweepKernelCpu& k = m.kernel;
+    auto rows = [&](auto&& perTexel) {
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, plan.size.y), [&](const tbb::blocked_range<int>& r) {
+                for (int b = r.begin(); b != r.end(); ++b)
+                    for (int a = 0; a < plan.size.x; ++a)
+                        perTexel(glm::ivec2(a, b), size_t(b) * size_t(plan.size.x) + size_t(a));
+            });
+    };
+    const shared::GpuPlaneSweep& sweep = m.sweep;
+    rows([&](glm::ivec2 t, size_t i) { m.trace[i] = k.sweepBackTrace(sweep, t); });
+    rows([&](glm::ivec2 t, size_t i) {
+        k.sweepAdvance(sweep, t, m.nextLight[i], m.nextDirection[i]);
+    });
+    if (shared::receiverCount(m.setup.params) > 0)
+        rows([&](glm::ivec2 t, size_t i) { k.sweepStopOnReceivers(sweep, t, m.nextLight[i]); });
+    m.light.swap(m.nextLight);
+    m.direction.swap(m.nextDirection);
+    k.sweepLight = m.light.data();
+    k.sweepDirection = m.direction.data();
+    for (const glm::vec4& tr : m.trace) m.texelsLost += tr.z > 0.0f ? 0 : 1;
+}
+
+void LightSweepCpu::deposit(glm::vec4* fluence, glm::vec4* direction, size_t strideU,
+                            size_t strideW) const {
+    depositPlane(impl_->sweep, impl_->plan, impl_->light, impl_->direction, impl_->kernel, fluence,
+                 direction, strideU, strideW);
+}
+
+const std::vector<glm::vec4>& LightSweepCpu::light() const {
+    return impl_->light;
+}
+const std::vector<glm::vec4>& LightSweepCpu::direction() const {
+    return impl_->direction;
+}
+
+SweepReceiversCpu::SweepReceiversCpu(const ViewSetup& setup, const PlaneSweepSettings& settings)
+    : count(3 * receiverMapTexels(setup.params)),
+      sums(new std::atomic<int64_t>[count]),
+      scale(planeSweepReceiverScale(setup, settings)) {
+    for (size_t i = 0; i < count; ++i) sums[i].store(0, std::memory_order_relaxed);
+}
+
+std::vector<glm::vec4> SweepReceiversCpu::map(const ViewSetup& setup) const {
+    std::vector<int64_t> gathered(count);
+    for (size_t i = 0; i < count; ++i) gathered[i] = sums[i].load();
+    return planeSweepReceiverMap(setup, gathered.data(), scale);
+}
+
+std::vector<LightSweepSpec> lightSweepSpecs(const ViewSetup& setup,
+                                            const RefractionVolumeCpu& gradient,
+                                            const PlaneSweepSettings& settings,
+                                            const ChannelGradientsCpu* channelGradients,
+                                            const SweepAxis* forced) {
+    const std::vector<const RefractionVolumeCpu*> gradients =
+        channelPassGradientsCpu(setup, gradient, channelGradients, "plane sweep");
+    const int passes = int(gradients.size());
+    std::vector<LightSweepSpec> specs;
+    for (int l = 0; l < shared::lightCount(setup.params); ++l) {
+        if (!shared::lightInFluence(setup.params, l)) continue;
+        const PlaneSweepPlan plan = planPlaneSweep(setup, l, settings, forced);
+        for (int pass = 0; pass < passes; ++pass)
+            specs.push_back({plan, gradients[pass], channelPassMask(pass, passes)});
+    }
+    return specs;
+}
+
+void countSweep(const LightSweepCpu& sweep, PlaneSweepResultCpu& out) {
+    const PlaneSweepPlan& plan = sweep.plan();
+    const int64_t texels = int64_t(plan.size.x) * plan.size.y;
+    out.texels += texels;
+    out.texelSteps += texels * plan.planes;
+    out.texelsLost += sweep.texelsLost();
+}
+
 PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
                                    const std::vector<const DenseGrid*>& slotGrids,
                                    const RefractionVolumeCpu& gradient,
@@ -259,69 +390,27 @@ PlaneSweepResultCpu sweepLightsCpu(const ViewSetup& setup,
     out.fluence.assign(voxels, glm::vec4(0.0f));
     out.direction.assign(voxels, glm::vec4(0.0f));
     out.memory.outputBytes = 2 * voxels * sizeof(glm::vec4);
-
-    shared::PlaneSweepKernelCpu kernel{{p}};
-    for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
-    const std::vector<const RefractionVolumeCpu*> gradients =
-        channelPassGradientsCpu(setup, gradient, channelGradients, "plane sweep");
-    const int passes = int(gradients.size());
     // Power gathered by the receivers' map texels, in fixed point (any order, the same sums).
-    const size_t receiverSums = 3 * receiverMapTexels(p);
-    std::unique_ptr<std::atomic<int64_t>[]> sums(new std::atomic<int64_t>[receiverSums]);
-    for (size_t i = 0; i < receiverSums; ++i) sums[i].store(0, std::memory_order_relaxed);
-    kernel.receiverSums = sums.get();
-    kernel.receiverScale = planeSweepReceiverScale(setup, settings);
-
-    for (int l = 0; l < shared::lightCount(p); ++l) {
-        if (!shared::lightInFluence(p, l)) continue;
-        const PlaneSweepPlan plan = planPlaneSweep(setup, l, settings);
-        const size_t texels = size_t(plan.size.x) * size_t(plan.size.y);
-        out.memory.bufferBytes = std::max(out.memory.bufferBytes, 5 * texels * sizeof(glm::vec4));
-        for (int pass = 0; pass < passes; ++pass) {
-            out.texels += int64_t(texels);
-            kernel.gradient = gradients[pass]->data();
-            kernel.sweepChannels = channelPassMask(pass, passes);
-            std::vector<glm::vec4> light(texels), direction(texels), nextLight(texels),
-                nextDirection(texels), trace(texels);
-            for (int j = 0; j < plan.planes; ++j) {
-                const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
-                shared::PlaneSweepKernelCpu k = kernel;
-                k.sweepLight = light.data();
-                k.sweepDirection = direction.data();
-                k.sweepTrace = trace.data();
-                k.planeWidth = plan.size.x;
-                auto rows = [&](auto&& perTexel) {
-                    tbb::parallel_for(tbb::blocked_range<int>(0, plan.size.y),
-                                      [&](const tbb::blocked_range<int>& r) {
-                                          for (int b = r.begin(); b != r.end(); ++b)
-                                              for (int a = 0; a < plan.size.x; ++a)
-                                                  perTexel(
-                                                      glm::ivec2(a, b),
-                                                      size_t(b) * size_t(plan.size.x) + size_t(a));
-                                      });
-                };
-                rows([&](glm::ivec2 t, size_t i) { trace[i] = k.sweepBackTrace(sweep, t); });
-                rows([&](glm::ivec2 t, size_t i) {
-                    k.sweepAdvance(sweep, t, nextLight[i], nextDirection[i]);
-                });
-                if (shared::receiverCount(p) > 0)
-                    rows([&](glm::ivec2 t, size_t i) {
-                        k.sweepStopOnReceivers(sweep, t, nextLight[i]);
-                    });
-                light.swap(nextLight);
-                direction.swap(nextDirection);
-                out.texelSteps += int64_t(texels);
-                for (const glm::vec4& tr : trace) out.texelsLost += tr.z > 0.0f ? 0 : 1;
-                const int slice = planeSweepSlice(plan, j);
-                if (slice < 0) continue;
-                depositPlane(sweep, plan, slice, light, direction, k, out);
-                if (observer) observer(l, plan, slice, light, direction);
-            }
+    SweepReceiversCpu receivers(setup, settings);
+    const glm::ivec3 stride(1, res.x, res.x * res.y);
+    // One light (and channel) at a time: its buffers go before the next's are made.
+    for (const LightSweepSpec& spec :
+         lightSweepSpecs(setup, gradient, settings, channelGradients)) {
+        const PlaneSweepPlan& plan = spec.plan;
+        LightSweepCpu sweep(setup, slotGrids, spec, settings, receivers);
+        out.memory.bufferBytes = std::max(out.memory.bufferBytes, sweep.bufferBytes());
+        for (int j = 0; j < plan.planes; ++j) {
+            sweep.advance(j);
+            const int slice = planeSweepSlice(plan, j);
+            if (slice < 0) continue;
+            const size_t base = size_t(slice) * size_t(stride[plan.axis]);
+            sweep.deposit(out.fluence.data() + base, out.direction.data() + base,
+                          size_t(stride[plan.u]), size_t(stride[plan.w]));
+            if (observer) observer(plan.light, plan, slice, sweep.light(), sweep.direction());
         }
+        countSweep(sweep, out);
     }
-    std::vector<int64_t> gathered(receiverSums);
-    for (size_t i = 0; i < receiverSums; ++i) gathered[i] = sums[i].load();
-    out.receiverMap = planeSweepReceiverMap(setup, gathered.data(), kernel.receiverScale);
+    out.receiverMap = receivers.map(setup);
     return out;
 }
 

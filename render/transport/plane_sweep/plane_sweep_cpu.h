@@ -10,9 +10,11 @@
 // Deterministic: every texel of a plane is computed from the previous plane alone, in any
 // order; the receivers' sums are fixed point, so their order does not matter either: the same
 // bits for any thread count, and on the GPU (plane_sweep_gpu.h).
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -38,6 +40,9 @@ struct PlaneSweepSettings {
     // Light whose direction comes within this cosine of the planes is lost (a sweep cannot
     // carry light that does not cross its planes).
     float minCosine = 0.2f;
+    // 1: the view rays advance with the planes and no fluence volume is kept (plane_sweep_view.h);
+    // 0: the planes are written into the fluence volumes the view pass reads.
+    int interleavedView = 0;
 };
 
 // How one light is swept: along `axis` (u, w the plane's axes), toward +axis when order is +1.
@@ -53,9 +58,19 @@ struct PlaneSweepPlan {
     glm::dvec2 softRadius{0.0};
 };
 
-// The sweep of light l. Throws eikon::Error where a point or spot light is not outside the face
-// its sweep enters through (the sweep needs every ray to cross the planes forward).
-PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int light, const PlaneSweepSettings& s);
+// A family of planes: the slices across `axis`, swept toward +axis when order is +1.
+struct SweepAxis {
+    int axis = 2;
+    int order = 1;
+};
+// The axis a direction travels most along, and its sense.
+SweepAxis dominantAxis(glm::vec3 direction);
+
+// The sweep of light l: across the axis its light travels most along, or across `forced`. Throws
+// eikon::Error where a point or spot light is not outside the face its sweep enters through (the
+// sweep needs every ray to cross the planes forward).
+PlaneSweepPlan planPlaneSweep(const ViewSetup& setup, int light, const PlaneSweepSettings& s,
+                              const SweepAxis* forced = nullptr);
 
 // Plane j (0 ≤ j < plan.planes) of a light's sweep: the shared step's parameters, the same for
 // the CPU twin and the GPU dispatch.
@@ -75,6 +90,9 @@ std::vector<glm::vec4> planeSweepReceiverMap(const ViewSetup& setup, const int64
 struct PlaneSweepMemory {
     size_t bufferBytes = 0;  // the light buffers: two planes of light and direction, one of traces
     size_t outputBytes = 0;  // the fluence and mean-direction volumes written for the view
+    // The interleaved view's (plane_sweep_view.h): the two slices of fluence and direction it
+    // holds and the view rays' states; 0 otherwise.
+    size_t viewBytes = 0;
 };
 
 struct PlaneSweepResultCpu {
@@ -90,6 +108,63 @@ struct PlaneSweepResultCpu {
     int64_t texelsLost = 0;  // of them, where the light turned within minCosine of the planes
     PlaneSweepMemory memory;
 };
+
+// The receivers' sums of the power the sweeps stop (3 fixed-point int64 per map texel, any
+// order of additions giving the same sums) and the map they make.
+struct SweepReceiversCpu {
+    SweepReceiversCpu(const ViewSetup& setup, const PlaneSweepSettings& settings);
+    std::vector<glm::vec4> map(const ViewSetup& setup) const;
+    size_t count;
+    std::unique_ptr<std::atomic<int64_t>[]> sums;
+    double scale;
+};
+
+// One sweep: a light, and under dispersion one colour channel of it, through that channel's ∇n.
+struct LightSweepSpec {
+    PlaneSweepPlan plan;
+    const RefractionVolumeCpu* gradient;
+    glm::vec3 channels;  // the channels its sources send (render/transport/channel_passes.h)
+};
+// Every light that comes through the fluence, each channel's sweep under dispersion (with
+// channelGradients and a setup that disperses), in the order their deposits add up. Across
+// `forced` planes when given.
+std::vector<LightSweepSpec> lightSweepSpecs(const ViewSetup& setup,
+                                            const RefractionVolumeCpu& gradient,
+                                            const PlaneSweepSettings& settings,
+                                            const ChannelGradientsCpu* channelGradients,
+                                            const SweepAxis* forced = nullptr);
+
+// One sweep's buffers, advanced plane by plane: sweepLightsCpu runs the sweeps one after the
+// other; the interleaved view (plane_sweep_view.h) all of them together, plane by plane, beside
+// the view rays.
+class LightSweepCpu {
+public:
+    LightSweepCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
+                  const LightSweepSpec& spec, const PlaneSweepSettings& settings,
+                  SweepReceiversCpu& receivers);
+    ~LightSweepCpu();
+    LightSweepCpu(const LightSweepCpu&) = delete;
+    LightSweepCpu& operator=(const LightSweepCpu&) = delete;
+
+    const PlaneSweepPlan& plan() const;
+    // Advances the buffers to plane j: 0, 1, ... plan().planes − 1 in turn.
+    void advance(int j);
+    // Adds the light on the plane just reached (a voxel-centre plane: planeSweepSlice ≥ 0) to a
+    // slice of the fluence and mean-direction volumes: texel (a, b) to element
+    // a·strideU + b·strideW (sweepDepositTexel).
+    void deposit(glm::vec4* fluence, glm::vec4* direction, size_t strideU, size_t strideW) const;
+    // The plane just reached (rgb: irradiance; direction xyz: v, w: 1 where lit), u fastest.
+    const std::vector<glm::vec4>& light() const;
+    const std::vector<glm::vec4>& direction() const;
+    int64_t texelsLost() const;  // so far
+    size_t bufferBytes() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+// Adds a finished sweep's texels, steps and losses to out's counters.
+void countSweep(const LightSweepCpu& sweep, PlaneSweepResultCpu& out);
 
 // Sees each light's buffer at every voxel-centre plane: the light, the slice index along the
 // plan's axis, and the plane's light (rgb: irradiance on the plane) and direction (xyz: v =

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/memory_limit.h"
 #include "render/input_key.h"
+#include "render/transport/plane_sweep/plane_sweep_view.h"
 
 namespace eikon {
 namespace {
@@ -30,6 +31,8 @@ PlaneSweepTransportSettings readPlaneSweepTransportSettings(const json::Value* s
         s.sweep.intensityCorrection = correction->boolean() ? 1 : 0;
     if (auto cosine = object.optional("min_cosine"))
         s.sweep.minCosine = cosine->floatNumber(Range::closedOpen(0.01, 1.0));
+    if (auto view = object.optional("view"))
+        s.sweep.interleavedView = view->choice({"volume", "interleaved"}) == "interleaved" ? 1 : 0;
     object.finish();
     return s;
 }
@@ -51,7 +54,20 @@ TransportNeeds PlaneSweepTransport::needs() const {
 void PlaneSweepTransport::configure(const Scene& scene, ViewSetup& setup) {
     const std::string where =
         settings_.where.empty() ? scene.path + ":/render/light_transport" : settings_.where;
+    interleaved_ = false;
     if (!lightAllThroughFluence(scene, setup)) return;
+    if (settings_.sweep.interleavedView) {
+        const std::string at = where + "/view";
+        if (device_.gpu)
+            throw Error(at,
+                        "the interleaved view runs on the CPU twin only (its GPU port is not "
+                        "done): use --backend cpu, or \"view\": \"volume\"");
+        checkInterleavedView(setup, settings_.sweep, at);
+        interleaved_ = true;
+        checkMemory(at, double(interleavedViewBytes(setup)),
+                    "the interleaved view's rays and planes", "lower the image size");
+        return;
+    }
     for (int l = 0; l < shared::lightCount(setup.params); ++l)
         planPlaneSweep(setup, l, settings_.sweep);  // a light it cannot sweep fails here
     // The output volumes (the buffers are a few planes).
@@ -66,7 +82,7 @@ std::vector<unsigned char> PlaneSweepTransport::cacheKey(
     if (!shared::readsFluence(setup.params)) return {};
     std::vector<unsigned char> key = transportInputsKey(setup, slotGrids);
     appendReceiverMapsKey(setup, key);  // receivers stop the light and fill their maps
-    static_assert(sizeof(PlaneSweepSettings) == 4 * 4, "PlaneSweepSettings gained padding");
+    static_assert(sizeof(PlaneSweepSettings) == 5 * 4, "PlaneSweepSettings gained padding");
     appendBytes(key, &settings_.sweep, sizeof(settings_.sweep));
     // Each channel's light bends with its own n under dispersion.
     for (const glm::vec3& slopes : setup.channelIndexSlopes)
@@ -83,6 +99,20 @@ void PlaneSweepTransport::runCpu(const TransportInputsCpu& in) {
     stats_.steps = result_.texelSteps;
     stats_.particlesTraced = result_.texels;
     stats_.particlesCut = result_.texelsLost;
+}
+
+Image PlaneSweepTransport::runWithViewCpu(const TransportInputsCpu& in, const Image* environment) {
+    InterleavedViewCpu frame = renderInterleavedCpu(in.setup, in.slotGrids, in.gradient,
+                                                    settings_.sweep, environment, in.timer);
+    result_ = std::move(frame.sweep);
+    result_.memory.viewBytes = frame.windowBytes + frame.rayBytes;
+    stats_ = TransportStats{};
+    stats_.steps = result_.texelSteps;
+    stats_.particlesTraced = result_.texels;
+    stats_.particlesCut = result_.texelsLost;
+    stats_.viewSteps = frame.viewSteps;
+    stats_.viewSamplesBehind = frame.samplesBehind;
+    return std::move(frame.image);
 }
 
 void PlaneSweepTransport::runGpu(const TransportInputsGpu& in) {

@@ -5,9 +5,10 @@
 // Δs∇n and corrects its intensity by the ratio of footprint areas, so curved light and caustics
 // come without particles and without noise (render/transport/plane_sweep/plane_sweep_cpu.h).
 //
-// This step writes the swept planes into the output contract's fluence volumes, so every view
-// pass and `eikon bench methods` read it like the other methods. The thesis's viewing rays that
-// advance with the planes in 2D buffers (no volume at all) come next (docs/methods.md).
+// By default the swept planes are written into the output contract's fluence volumes, so every
+// view pass and `eikon bench methods` read it like the other methods. With "view": "interleaved"
+// the view rays advance with the planes, as in the thesis, and no volume is kept
+// (plane_sweep_view.h; CPU twin only).
 //
 // Settings: render.light_transport.plane_sweep (docs/scene-format.md).
 // Runs on the CPU twin or on the GPU (plane_sweep_gpu.h), with the same results.
@@ -41,6 +42,8 @@ public:
     std::vector<unsigned char> cacheKey(
         const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids) const override;
     void runCpu(const TransportInputsCpu& in) override;
+    bool viewsInterleaved() const override { return interleaved_; }
+    Image runWithViewCpu(const TransportInputsCpu& in, const Image* environment) override;
     void runGpu(const TransportInputsGpu& in) override;
     TransportOutputCpu outputCpu() const override;
     void bindGpu() const override;
@@ -58,6 +61,7 @@ private:
     PlaneSweepResultCpu result_;
     std::unique_ptr<PlaneSweepGpu> gpu_;
     TransportStats stats_;
+    bool interleaved_ = false;  // configure's: interleaved view asked for, light to sweep
 };
 
 }  // namespace eikon

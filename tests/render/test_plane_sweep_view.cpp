@@ -1,0 +1,176 @@
+// The plane sweep's interleaved view (render/transport/plane_sweep/plane_sweep_view.h): the view
+// rays advance with the light planes and read only the last two swept, so no fluence volume is
+// kept. Where the planes are the same as the volume path's (the light and the camera along one
+// axis) and no view ray turns back against the sweep, the frame is the volume path's, bit for
+// bit: with straight rays, with rays bent by a smooth lens, after a light move, on any thread
+// count. What it holds grows with a plane and the image, not with the volume. Rays that turn
+// back are counted; what it cannot do is refused in one line.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include <tbb/global_control.h>
+
+#include "core/error.h"
+#include "core/scene.h"
+#include "render/frame_renderer.h"
+#include "render/image.h"
+#include "render/light_transport_registry.h"
+#include "render/transport/plane_sweep/plane_sweep_transport.h"
+#include "support/light_transport_setup.h"
+#include "support/scene_builders.h"
+
+using namespace eikon;
+
+namespace {
+
+// A fog box with a refracting sphere (glassSphereInFog), lit along −z from the camera's side
+// (the camera at z = 4 looks along −z too): the light's planes and the view's are the same.
+// The sphere's index is graded (no sharp surface: the volume path would trace its reflections
+// back toward the camera, which the sweep cannot) and low enough that no view ray turns back.
+Scene lensInFog(int resolution, bool refracting = true) {
+    Scene scene = test::glassSphereInFog();
+    scene.lights[0].direction = glm::normalize(glm::vec3(0.15f, -0.3f, -1.0f));
+    scene.materials[1].ior = 1.2f;
+    scene.materials[1].fresnel = false;
+    if (!refracting) scene.materials.pop_back();
+    test::setVolume(scene, glm::vec3(-1.0f), glm::vec3(1.0f), glm::ivec3(resolution));
+    scene.render.width = 40;
+    scene.render.height = 30;
+    test::setTransportMethod(scene, "plane_sweep");
+    return scene;
+}
+
+Scene interleaved(Scene scene) {
+    patchLightTransport(scene, R"({"plane_sweep": {"view": "interleaved"}})");
+    return scene;
+}
+
+Image render(const Scene& scene) {
+    FrameRenderer renderer(scene, Backend::Cpu);
+    return renderer.render(0);
+}
+
+bool sameBits(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.pixels == b.pixels;
+}
+
+const PlaneSweepTransport& sweepOf(const FrameRenderer& renderer) {
+    return dynamic_cast<const PlaneSweepTransport&>(renderer.lightTransport());
+}
+
+}  // namespace
+
+TEST_CASE("interleaved view: straight rays give the volume path's frame, bit for bit",
+          "[plane_sweep][interleaved]") {
+    const Scene scene = lensInFog(20, false);
+    FrameRenderer renderer(interleaved(scene), Backend::Cpu);
+    const Image image = renderer.render(0);
+    CHECK(sameBits(image, render(scene)));
+    const TransportStats stats = renderer.lastTransportStats();
+    CHECK(stats.viewSteps > 0);
+    CHECK(stats.viewSamplesBehind == 0);
+    CHECK(stats.steps == int64_t(20) * 20 * 20);  // one texel step a plane, no planes between
+}
+
+TEST_CASE("interleaved view: rays bent by a lens, and a light move, give the volume path's frames",
+          "[plane_sweep][interleaved]") {
+    Scene scene = lensInFog(24);
+    FrameRenderer renderer(interleaved(scene), Backend::Cpu);
+    CHECK(sameBits(renderer.render(0), render(scene)));
+    CHECK(renderer.lastTransportStats().viewSamplesBehind == 0);
+    CHECK(renderer.transportRuns("plane_sweep") == 1);
+
+    // The light moves: the next frame sweeps it again, as a camera move would.
+    scene.lights[0].direction = glm::normalize(glm::vec3(-0.2f, -0.4f, -1.0f));
+    const Scene moved = interleaved(scene);
+    CHECK(sameBits(renderer.render(FrameInputs(0, moved)), render(scene)));
+    CHECK(renderer.transportRuns("plane_sweep") == 2);
+}
+
+TEST_CASE("interleaved view: the same bytes on one thread as on all",
+          "[plane_sweep][interleaved]") {
+    const Scene scene = interleaved(lensInFog(20));
+    const Image all = render(scene);
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    CHECK(sameBits(render(scene), all));
+}
+
+TEST_CASE(
+    "interleaved view: no fluence volume; its planes grow with a slice, its rays with the "
+    "image",
+    "[plane_sweep][interleaved]") {
+    const auto memoryAt = [](int resolution, bool interleave) {
+        const Scene scene = lensInFog(resolution);
+        FrameRenderer renderer(interleave ? interleaved(scene) : scene, Backend::Cpu);
+        renderer.render(0);
+        return sweepOf(renderer).memory();
+    };
+    const PlaneSweepMemory volume16 = memoryAt(16, false), volume32 = memoryAt(32, false);
+    const PlaneSweepMemory view16 = memoryAt(16, true), view32 = memoryAt(32, true);
+    CHECK(volume32.outputBytes == 8 * volume16.outputBytes);  // the volume path's, ∝ voxels
+    CHECK(view16.outputBytes == 0);
+    CHECK(view32.outputBytes == 0);
+    // Two slices of fluence and direction: 2 · 2 · 16 bytes a texel of a plane.
+    const size_t window16 = 2 * 2 * 16 * 16 * sizeof(glm::vec4);
+    CHECK(view32.viewBytes - view16.viewBytes == 3 * window16);  // the planes ×4, the rays ×1
+    CHECK(view32.bufferBytes == 4 * view16.bufferBytes);         // a light's buffers: planes
+    // At 32³ the rays and planes together take less than the volume path's volumes.
+    CHECK(view32.viewBytes < volume32.outputBytes);
+}
+
+TEST_CASE("interleaved view: view rays that turn back through a sharp ball are counted",
+          "[plane_sweep][interleaved]") {
+    // A sharp ball of n = 1.5 turns the rays that graze it by up to 96 degrees: they travel back
+    // against the sweep and read the nearest light plane still held.
+    Scene scene = lensInFog(24);
+    scene.materials[1].ior = 1.5f;
+    scene.sources[1].falloff = 0.02f;
+    FrameRenderer renderer(interleaved(scene), Backend::Cpu);
+    const Image image = renderer.render(0);
+    CHECK(renderer.lastTransportStats().viewSamplesBehind > 0);
+    for (const glm::vec4& pixel : image.pixels)
+        REQUIRE((std::isfinite(pixel.x) && std::isfinite(pixel.y) && std::isfinite(pixel.z)));
+}
+
+TEST_CASE("interleaved view: what it cannot do is refused in one line at its setting",
+          "[plane_sweep][interleaved]") {
+    const auto refusal = [](const Scene& scene) {
+        try {
+            render(scene);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    SECTION("a light from another side than the camera's") {
+        Scene scene = lensInFog(16);
+        // The camera looks along −x: the light, along −z mostly, crosses x planes backward.
+        scene.camera = test::cameraAt(glm::vec3(4.0f, 0.0f, 0.5f), glm::vec3(0.0f));
+        const std::string message = refusal(interleaved(scene));
+        CHECK_THAT(message, Catch::Contains("/plane_sweep/view"));
+        CHECK_THAT(message, Catch::Contains("light 0"));
+        // Light along the planes.
+        scene.lights[0].direction = glm::normalize(glm::vec3(-1.0f, -0.3f, 0.0f));
+        scene.camera = test::cameraAt(glm::vec3(0.0f, 0.0f, 4.0f), glm::vec3(0.0f, 0.0f, 0.8f));
+        CHECK_THAT(refusal(interleaved(scene)), Catch::Contains("light 0"));
+    }
+    SECTION("a camera inside the slab of planes") {
+        Scene scene = lensInFog(16);
+        scene.camera = test::cameraAt(glm::vec3(0.3f, 0.2f, 0.5f), glm::vec3(0.3f, 0.2f, -1.0f));
+        CHECK_THAT(refusal(interleaved(scene)), Catch::Contains("camera outside"));
+    }
+    SECTION("on the GPU") {
+        const Scene scene = interleaved(lensInFog(16));
+        FrameRenderer renderer(scene, Backend::Cpu);
+        renderer.render(0);  // the volume the scene renders in
+        const RenderVolume& volume = renderer.volume();
+        ViewSetup setup =
+            makeViewSetup(scene, volume, makeCameraFrame(scene.camera, volume.bounds, 40, 30));
+        PlaneSweepTransportSettings settings;
+        settings.sweep.interleavedView = 1;
+        PlaneSweepTransport gpu(settings, TransportDevice{true, false, false});
+        CHECK_THROWS_WITH(gpu.configure(scene, setup), Catch::Contains("CPU twin only"));
+    }
+}
