@@ -25,17 +25,18 @@ struct VolumeAccessCpu {
     const vec4* fluence = nullptr;
     const vec4* fluenceDirection = nullptr;
     // The plane sweep's interleaved view (render/transport/plane_sweep/plane_sweep_view.h) keeps
-    // of the fluence volumes only the two slices across `axis` swept last, slice k at plane
-    // k & 1 of the two (u fastest); lookups elsewhere along the axis take the nearer of the two.
+    // of the fluence volumes only the last `slices` slices swept across `axis`, slice k at plane
+    // k % slices of them (u fastest); lookups elsewhere along the axis take the nearest held.
     // axis < 0: whole volumes.
     struct FluenceWindow {
         int axis = -1, u = 0, w = 0;
+        int slices = 2;
         int first = 0, last = 0;  // the slices held (first ≤ last)
         size_t planeTexels = 0;
         // The sweep: toward +axis (order 1) or −axis; `swept` slices so far.
         int order = 1, swept = 0;
         // Samples taken from slices already dropped (a view ray that turned back against the
-        // sweep), read from the nearer slice held; counted.
+        // sweep), read from the nearest slice held; counted.
         std::atomic<int64_t>* behind = nullptr;
     };
     FluenceWindow window = {};
@@ -45,7 +46,7 @@ struct VolumeAccessCpu {
         const int k = v[window.axis] < window.first  ? window.first
                       : v[window.axis] > window.last ? window.last
                                                      : v[window.axis];
-        return size_t(k & 1) * window.planeTexels +
+        return size_t(k % window.slices) * window.planeTexels +
                size_t(v[window.w]) * size_t(params.resolution[window.u]) + size_t(v[window.u]);
     }
 
@@ -85,7 +86,7 @@ struct ViewKernelCpu : VolumeAccessCpu {
     vec4 fetchReceiverTexel(int index) const { return receiverMap[size_t(index)]; }
     // Whether a view ray may shade a sample at volume index position p (view_march.h): always,
     // but in the plane sweep's interleaved view, where the two slices its fluence lookups read
-    // (sampleVolume's) must have been swept.
+    // (sampleVolume's) must have been swept. Counts the samples that read a slice dropped.
     bool viewSampleReady(vec3 p) const {
         if (window.axis < 0) return true;
         const int last = params.resolution[window.axis] - 1;
@@ -96,7 +97,7 @@ struct ViewKernelCpu : VolumeAccessCpu {
         const int r0 = window.order > 0 ? k0 : last - k0;
         const int r1 = window.order > 0 ? k1 : last - k1;
         if ((r0 > r1 ? r0 : r1) >= window.swept) return false;
-        if ((r0 < r1 ? r0 : r1) < window.swept - 2 && window.behind)
+        if ((r0 < r1 ? r0 : r1) < window.swept - window.slices && window.behind)
             window.behind->fetch_add(1, std::memory_order_relaxed);
         return true;
     }

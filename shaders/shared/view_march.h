@@ -175,8 +175,6 @@ struct CurvedRay {
     vec4 walk;  // the walk across sharp surfaces (fresnel.h)
     vec4 surfaceNormal;
     vec3 crossingStart;
-    KeptReflection first;
-    KeptReflection second;
     float h;             // the step length
     float surfaceSlope;  // per scene unit; 0: no walk
     int kept;
@@ -201,8 +199,6 @@ CurvedRay curvedRayStart(vec3 entry, vec3 dir, bool shade, float onSurface, int 
     r.exitDir = dir;
     r.radiance = radiance;
     r.transmittance = transmittance;
-    r.first.weight = r.second.weight = vec4(0.0f);
-    r.first.origin = r.second.origin = r.first.dir = r.second.dir = vec4(0.0f);
     r.kept = 0;
     r.keep = keep;
     r.shade = shade;
@@ -233,8 +229,10 @@ CurvedRay curvedRayStart(vec3 entry, vec3 dir, bool shade, float onSurface, int 
 // (viewSampleReady, from the includer: EK_RAY_WAITS). A waiting ray is left as it was before
 // that step: advanced again later, it takes the same step, to the bit. One loop with breaks, as
 // the trace was written before it could wait: a step function called in a loop, with its early
-// returns, took llvmpipe 10 % longer to compile view.comp.
-int curvedRayAdvance(EK_INOUT(CurvedRay) r) {
+// returns, took llvmpipe 10 % longer to compile view.comp. The first r.keep reflections at sharp
+// surfaces go to first and second (traceCurvedRayReflecting), the others see the environment.
+int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
+                     EK_INOUT(KeptReflection) second) {
     int status = EK_RAY_ENDED;
     for (; r.steps < r.maxSteps; ++r.steps) {
         vec3 next = r.x;
@@ -288,9 +286,9 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r) {
                     k.dir = vec4(mirror, n1);
                     k.weight = vec4(weight, 0.0f);
                     if (r.kept == 0)
-                        r.first = k;
+                        first = k;
                     else
-                        r.second = k;
+                        second = k;
                     ++r.kept;
                 } else {
                     r.radiance += weight * environmentRadiance(mirror);
@@ -336,12 +334,12 @@ vec3 traceCurvedRayReflecting(vec3 entry, vec3 dir, bool shade, float onSurface,
                               EK_OUT(vec3) exitDir, EK_OUT(KeptReflection) first,
                               EK_OUT(KeptReflection) second) {
     CurvedRay r = curvedRayStart(entry, dir, shade, onSurface, keep, radiance, transmittance);
-    curvedRayAdvance(r);
+    first.weight = second.weight = vec4(0.0f);
+    first.origin = second.origin = first.dir = second.dir = vec4(0.0f);
+    curvedRayAdvance(r, first, second);
     radiance = r.radiance;
     transmittance = r.transmittance;
     exitDir = r.exitDir;
-    first = r.first;
-    second = r.second;
     return r.x;
 }
 

@@ -23,21 +23,30 @@ glm::vec3 volumeCentre(const shared::GpuViewParams& p) {
     return 0.5f * (glm::vec3(p.volumeMin) + glm::vec3(p.volumeMax));
 }
 
-// One pixel's view ray while the planes pass: curved or straight (the scene's), or none where it
-// misses the volume.
+// One pixel's view ray while the planes pass: whether it met the volume, whether it ended. Its
+// trace, curved or straight (the scene's), is kept apart: only one kind is allocated.
 struct PixelRay {
-    shared::ViewKernelCpu::CurvedRay curved;
-    shared::ViewKernelCpu::StraightRay straight;
-    glm::vec3 missDir{0.0f};  // the pixel's direction (what a straight ray or a miss sees)
     bool inVolume = false;
     bool ended = false;
 };
+using CurvedRayCpu = shared::ViewKernelCpu::CurvedRay;
+using StraightRayCpu = shared::ViewKernelCpu::StraightRay;
 
-// The two slices of the fluence and mean-direction volumes held across `axis`.
+// The bytes of one pixel's ray.
+size_t rayBytes(bool curved) {
+    return sizeof(PixelRay) + (curved ? sizeof(CurvedRayCpu) : sizeof(StraightRayCpu));
+}
+
+// The slices of the fluence and mean-direction volumes held. Every kWindowSlices − 1 slices the
+// view rays advance (the ray states are read and written once for that many planes); a ray may
+// turn back kWindowSlices − 2 slices before it reads one dropped.
+constexpr int kWindowSlices = 8;
+
+// The slices held across `axis`, fluence and direction.
 size_t windowBytes(const shared::GpuViewParams& p, const SweepAxis& axis) {
     const glm::ivec3 res(p.resolution);
-    return 2 * 2 * size_t(res[(axis.axis + 1) % 3]) * size_t(res[(axis.axis + 2) % 3]) *
-           sizeof(glm::vec4);
+    return 2 * size_t(kWindowSlices) * size_t(res[(axis.axis + 1) % 3]) *
+           size_t(res[(axis.axis + 2) % 3]) * sizeof(glm::vec4);
 }
 
 }  // namespace
@@ -45,7 +54,7 @@ size_t windowBytes(const shared::GpuViewParams& p, const SweepAxis& axis) {
 size_t interleavedViewBytes(const ViewSetup& setup) {
     const shared::GpuViewParams& p = setup.params;
     return windowBytes(p, interleavedSweepAxis(setup)) +
-           size_t(p.image.x) * size_t(p.image.y) * sizeof(PixelRay);
+           size_t(p.image.x) * size_t(p.image.y) * rayBytes(shared::curvedRays(p));
 }
 
 SweepAxis interleavedSweepAxis(const ViewSetup& setup) {
@@ -103,11 +112,12 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
             std::make_unique<LightSweepCpu>(setup, slotGrids, spec, settings, receivers));
     for (const auto& sweep : sweeps) out.sweep.memory.bufferBytes += sweep->bufferBytes();
 
-    // The two slices of the fluence and mean-direction volumes held, slice k at plane k & 1.
+    // The slices of the fluence and mean-direction volumes held, slice k at plane k % slices.
     const glm::ivec3 res(p.resolution);
     const int u = (axis.axis + 1) % 3, w = (axis.axis + 2) % 3;
     const size_t planeTexels = size_t(res[u]) * size_t(res[w]);
-    std::vector<glm::vec4> fluence(2 * planeTexels), direction(2 * planeTexels);
+    std::vector<glm::vec4> fluence(kWindowSlices * planeTexels),
+        direction(kWindowSlices * planeTexels);
     out.windowBytes = windowBytes(p, axis);
 
     std::atomic<int64_t> behind{0};
@@ -122,63 +132,73 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
     kernel.window.u = u;
     kernel.window.w = w;
     kernel.window.order = axis.order;
+    kernel.window.slices = kWindowSlices;
     kernel.window.planeTexels = planeTexels;
     kernel.window.behind = &behind;
 
     // Every pixel's ray, started where it enters the volume (view_march.h, integrateViewRay).
     std::optional<StageScope> starting(std::in_place, timer, "view");
     const int width = p.image.x, height = p.image.y;
-    std::vector<PixelRay> rays(size_t(width) * size_t(height));
-    out.rayBytes = rays.size() * sizeof(PixelRay);
     const bool curved = shared::curvedRays(p);
+    const size_t pixels = size_t(width) * size_t(height);
+    std::vector<PixelRay> rays(pixels);
+    std::vector<CurvedRayCpu> curvedRays(curved ? pixels : 0);
+    std::vector<StraightRayCpu> straightRays(curved ? 0 : pixels);
+    out.rayBytes = pixels * rayBytes(curved);
     const auto forEachPixel = [&](const auto& perPixel) {
         tbb::parallel_for(tbb::blocked_range<int>(0, height),
                           [&](const tbb::blocked_range<int>& r) {
                               for (int y = r.begin(); y != r.end(); ++y)
                                   for (int x = 0; x < width; ++x)
-                                      perPixel(x, y, rays[size_t(y) * size_t(width) + size_t(x)]);
+                                      perPixel(x, y, size_t(y) * size_t(width) + size_t(x));
                           });
     };
-    forEachPixel([&](int x, int y, PixelRay& ray) {
+    forEachPixel([&](int x, int y, size_t i) {
+        PixelRay& ray = rays[i];
         const glm::vec3 origin(p.cameraOrigin);
         const glm::vec3 dir = kernel.pixelRayDirection(x, y);
-        ray.missDir = dir;
         const glm::vec2 span = kernel.intersectVolume(origin, dir);
         ray.inVolume = span.x < span.y;
         ray.ended = !ray.inVolume;
         if (!ray.inVolume) return;
         if (curved)
-            ray.curved = kernel.curvedRayStart(origin + dir * span.x, dir, true, 0.0f, 0,
-                                               glm::vec3(0.0f), glm::vec3(1.0f));
+            curvedRays[i] = kernel.curvedRayStart(origin + dir * span.x, dir, true, 0.0f, 0,
+                                                  glm::vec3(0.0f), glm::vec3(1.0f));
         else
-            ray.straight = kernel.straightRayStart(origin, dir, span);
+            straightRays[i] = kernel.straightRayStart(origin, dir, span);
     });
     starting.reset();
     std::atomic<int64_t> steps{0};
     const auto advanceRays = [&](shared::ViewKernelCpu& k) {
-        forEachPixel([&](int, int, PixelRay& ray) {
+        forEachPixel([&](int, int, size_t i) {
+            PixelRay& ray = rays[i];
             if (ray.ended) return;
-            const int before = curved ? ray.curved.steps : ray.straight.step;
-            const int state =
-                curved ? k.curvedRayAdvance(ray.curved) : k.straightRayAdvance(ray.straight);
+            // Reflections at sharp surfaces see the environment: none is kept.
+            shared::ViewKernelCpu::KeptReflection none, unused;
+            const int before = curved ? curvedRays[i].steps : straightRays[i].step;
+            const int state = curved ? k.curvedRayAdvance(curvedRays[i], none, unused)
+                                     : k.straightRayAdvance(straightRays[i]);
             ray.ended = state == EK_RAY_ENDED;
-            const int64_t taken = (curved ? ray.curved.steps : ray.straight.step) - before;
+            const int64_t taken = (curved ? curvedRays[i].steps : straightRays[i].step) - before;
             steps.fetch_add(taken, std::memory_order_relaxed);
         });
     };
 
     // The planes, the light first: each voxel-centre plane becomes the newest slice held, the
-    // sweeps adding into it in the order the volume path adds them (the same bits), and then
-    // every view ray takes the steps whose samples it completes.
+    // sweeps adding into it in the order the volume path adds them (the same bits). Every
+    // kWindowSlices − 1 slices, and after the last, every view ray takes the steps whose samples
+    // the slices held complete: a sample not ready at one such turn needs a slice swept after it,
+    // so at the next its slices are among the kWindowSlices held.
     const int planes = sweeps.empty() ? 0 : sweeps.front()->plan().planes;
-    int swept = 0, previousSlice = -1;
+    const int depth = res[axis.axis];
+    int swept = 0;
     for (int j = 0; j < planes; ++j) {
         const int slice = planeSweepSlice(sweeps.front()->plan(), j);
-        const size_t base = size_t(slice & 1) * planeTexels;
         {
             StageScope stage(timer, "plane_sweep");
             for (const auto& sweep : sweeps) sweep->advance(j);
             if (slice < 0) continue;
+            const size_t base = size_t(slice % kWindowSlices) * planeTexels;
             std::fill(fluence.begin() + base, fluence.begin() + base + planeTexels,
                       glm::vec4(0.0f));
             std::fill(direction.begin() + base, direction.begin() + base + planeTexels,
@@ -186,14 +206,17 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
             for (const auto& sweep : sweeps)
                 sweep->deposit(fluence.data() + base, direction.data() + base, 1, size_t(res[u]));
         }
-        StageScope stage(timer, "view");
         ++swept;
+        if ((swept - 1) % (kWindowSlices - 1) != 0 && swept != depth) continue;
+        StageScope stage(timer, "view");
+        // The slices held, by their place in the sweep: swept − kWindowSlices … swept − 1.
+        const int oldest = std::max(swept - kWindowSlices, 0), newest = swept - 1;
+        const auto sliceAt = [&](int rank) { return axis.order > 0 ? rank : depth - 1 - rank; };
         shared::ViewKernelCpu k = kernel;
-        k.window.first = previousSlice < 0 ? slice : std::min(previousSlice, slice);
-        k.window.last = previousSlice < 0 ? slice : std::max(previousSlice, slice);
+        k.window.first = std::min(sliceAt(oldest), sliceAt(newest));
+        k.window.last = std::max(sliceAt(oldest), sliceAt(newest));
         k.window.swept = swept;
         advanceRays(k);
-        previousSlice = slice;
     }
     StageScope stage(timer, "view");
     // With no light to sweep the rays read no fluence: they finish in one go.
@@ -209,19 +232,19 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
     // What each ray sees where it leaves (integrateViewRay's last line), alpha the mean
     // transmittance (renderPixel's).
     out.image = Image(width, height);
-    forEachPixel([&](int x, int y, PixelRay& ray) {
+    forEachPixel([&](int x, int y, size_t i) {
         glm::vec3 radiance, transmittance;
-        if (!ray.inVolume) {
-            radiance = kernel.environmentRadiance(ray.missDir);
+        if (!rays[i].inVolume) {
+            radiance = kernel.environmentRadiance(kernel.pixelRayDirection(x, y));
             transmittance = glm::vec3(1.0f);
         } else if (curved) {
-            transmittance = ray.curved.transmittance;
-            radiance = ray.curved.radiance +
-                       transmittance * kernel.environmentRadiance(ray.curved.exitDir);
+            transmittance = curvedRays[i].transmittance;
+            radiance = curvedRays[i].radiance +
+                       transmittance * kernel.environmentRadiance(curvedRays[i].exitDir);
         } else {
-            transmittance = ray.straight.transmittance;
-            radiance =
-                ray.straight.radiance + transmittance * kernel.environmentRadiance(ray.missDir);
+            transmittance = straightRays[i].transmittance;
+            radiance = straightRays[i].radiance +
+                       transmittance * kernel.environmentRadiance(straightRays[i].dir);
         }
         out.image.at(x, y) =
             glm::vec4(radiance, (transmittance.x + transmittance.y + transmittance.z) / 3.0f);
