@@ -1,6 +1,6 @@
 // The plane sweep's interleaved view (render/transport/plane_sweep/plane_sweep_view.h): the view
-// rays advance with the light planes and read only the last two swept, so no fluence volume is
-// kept. Where the planes are the same as the volume path's (the light and the camera along one
+// rays advance with the light planes and read only the last few slices swept, so no fluence volume
+// is kept. Where the planes are the same as the volume path's (the light and the camera along one
 // axis) and no view ray turns back against the sweep, the frame is the volume path's, bit for
 // bit: with straight rays, with rays bent by a smooth lens, after a light move, on any thread
 // count. What it holds grows with a plane and the image, not with the volume. Rays that turn

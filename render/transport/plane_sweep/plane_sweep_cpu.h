@@ -90,7 +90,7 @@ std::vector<glm::vec4> planeSweepReceiverMap(const ViewSetup& setup, const int64
 struct PlaneSweepMemory {
     size_t bufferBytes = 0;  // the light buffers: two planes of light and direction, one of traces
     size_t outputBytes = 0;  // the fluence and mean-direction volumes written for the view
-    // The interleaved view's (plane_sweep_view.h): the two slices of fluence and direction it
+    // The interleaved view's (plane_sweep_view.h): the slices of fluence and direction it
     // holds and the view rays' states; 0 otherwise.
     size_t viewBytes = 0;
 };

@@ -1,8 +1,8 @@
 #pragma once
 // The plane sweep's interleaved view (Magnus's thesis, ch. 5.2, Algorithm 1): the view rays
-// advance through the volume with the light planes, each shading its samples from the last two
-// planes swept, so no fluence volume is stored: what the light needs grows with the image and
-// the plane, not with the volume, and a light move costs a sweep and a view like a camera move.
+// advance through the volume with the light planes, each shading its samples from the last few
+// slices swept (eight), so no fluence volume is stored: what the light needs grows with the image
+// and the plane, not with the volume, and a light move costs a sweep and a view like a camera move.
 //
 // The planes are the volume's slices across the axis the camera looks most along (from the
 // camera to the volume's centre), the thesis's planes perpendicular to the view, kept to the
@@ -11,7 +11,7 @@
 //
 // Each view ray is the view pass's own (shaders/shared/view_march.h: curvedRayAdvance,
 // straightRayAdvance), stopped where its next sample would read a slice not swept yet
-// (viewSampleReady) and taken on when it is. Its samples read the two slices held exactly as
+// (viewSampleReady) and taken on when it is. Its samples read the slices held exactly as
 // they would read the whole volume, so where the sweeps cross the same planes the image is the
 // volume path's to the bit; what differs: reflections at sharp surfaces are seen in the
 // environment (the view pass traces two through the volume, back toward the camera, against
@@ -39,7 +39,7 @@ SweepAxis interleavedSweepAxis(const ViewSetup& setup);
 void checkInterleavedView(const ViewSetup& setup, const PlaneSweepSettings& settings,
                           const std::string& where);
 
-// What the view rays and the two slices held take for this setup, in bytes (the sweeps' own
+// What the view rays and the slices held take for this setup, in bytes (the sweeps' own
 // buffers aside).
 size_t interleavedViewBytes(const ViewSetup& setup);
 
@@ -47,7 +47,7 @@ struct InterleavedViewCpu {
     Image image;
     // The sweeps' counters and memory; no fluence or direction volume, outputBytes 0.
     PlaneSweepResultCpu sweep;
-    size_t windowBytes = 0;  // the two slices of fluence and direction held
+    size_t windowBytes = 0;  // the slices of fluence and direction held
     size_t rayBytes = 0;     // the view rays' states
     // Samples of view rays that turned back against the sweep: read from the nearer slice held
     // instead of the one dropped.
