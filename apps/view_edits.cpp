@@ -1,11 +1,13 @@
 #include "apps/view_edits.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 
 #include "core/error.h"
+#include "core/particle_color.h"
 #include "render/light_transport_registry.h"
 
 namespace eikon::app {
@@ -96,6 +98,19 @@ void ViewEdits::add(const Scene& scene, const std::string& text) {
         setTransport(scene, text.substr(equals + 1));
         return;
     }
+    // "/materials/<i>/particle_color": a colour map by name.
+    const std::string colorKey = "/particle_color", materials = "/materials/";
+    const std::string pointer = text.substr(0, equals);
+    if (pointer.size() > materials.size() + colorKey.size() && pointer.rfind(materials, 0) == 0 &&
+        pointer.compare(pointer.size() - colorKey.size(), colorKey.size(), colorKey) == 0) {
+        const std::string index =
+            pointer.substr(materials.size(), pointer.size() - materials.size() - colorKey.size());
+        if (index.find_first_not_of("0123456789") != std::string::npos || index.size() > 6)
+            throw Error("--edit", "'" + pointer + "' in " + scene.path + ": '" + index +
+                                      "' is not a material's index");
+        setColorMap(scene, std::stoul(index), text.substr(equals + 1));
+        return;
+    }
     ViewEdit edit;
     edit.pointer = text.substr(0, equals);
     std::string why;
@@ -149,31 +164,81 @@ void ViewEdits::setTransport(const Scene& scene, const std::string& mergePatch) 
     method_.clear();  // the section holds the method now
 }
 
+void ViewEdits::setColorMap(const Scene& scene, size_t material, const std::string& name) {
+    const std::string pointer = "/materials/" + std::to_string(material) + "/particle_color";
+    std::string why;
+    // The materials the file lists are those whose optics the viewer edits (meshes add theirs).
+    if (!editableTarget(scene, "/materials/" + std::to_string(material) + "/absorption", why))
+        throw Error("--edit", "'" + pointer + "' in " + scene.path + ": " + why);
+    const std::vector<std::string>& names = colorMapNames();
+    if (name != "none" && std::find(names.begin(), names.end(), name) == names.end()) {
+        std::string known = "none";
+        for (const std::string& n : names) known += ", " + n;
+        throw Error("--edit", "'" + pointer + "=" + name + "': no colour map '" + name +
+                                  "' (there are " + known + ")");
+    }
+    const ParticleColorSpec& before = scene.materials[material].particleColor;
+    ColorMapEdit edit{material, name,
+                      before.empty() ? glm::vec2(0.0f, 1.0f) : particleColorRange(before),
+                      !before.empty()};
+    for (ColorMapEdit& e : colorMaps_)
+        if (e.material == material) {
+            e = edit;
+            return;
+        }
+    colorMaps_.push_back(edit);
+}
+
+void ViewEdits::adopt(const Scene& scene, const ViewEdits& scripted) {
+    for (const ViewEdit& e : scripted.edits_) set(e);
+    if (!scripted.transport_.empty()) setTransport(scene, scripted.transport_);
+    if (!scripted.method_.empty()) setMethod(scripted.method_);
+    for (const ColorMapEdit& e : scripted.colorMaps_) setColorMap(scene, e.material, e.map);
+}
+
 void ViewEdits::apply(Scene& frame) const {
     for (const ViewEdit& e : edits_) writeAnimationTarget(frame, e.target, e.value.data());
+    for (const ColorMapEdit& e : colorMaps_) {
+        if (e.material >= frame.materials.size()) continue;
+        ParticleColorSpec color;
+        if (e.map != "none") {
+            color.map = e.map;
+            color.range = e.range;
+        }
+        frame.materials[e.material].particleColor = color;
+    }
     if (!transport_.empty()) frame.render.lightTransport = transport_;
     if (!method_.empty()) patchLightTransport(frame, "{\"method\": \"" + method_ + "\"}");
 }
 
 std::string ViewEdits::jsonPatch() const {
-    std::string out = "[";
-    for (size_t i = 0; i < edits_.size(); ++i) {
-        const ViewEdit& e = edits_[i];
+    std::vector<std::string> ops;
+    for (const ViewEdit& e : edits_) {
         std::string value;
         for (size_t k = 0; k < e.value.size(); ++k)
             value += (k ? ", " : "") + jsonNumber(e.value[k]);
         if (e.value.size() > 1) value = "[" + value + "]";
-        out += std::string(i ? ", " : "") + "{\"op\": \"add\", \"path\": \"" + e.pointer +
-               "\", \"value\": " + value + "}";
+        ops.push_back("{\"op\": \"add\", \"path\": \"" + e.pointer + "\", \"value\": " + value +
+                      "}");
+    }
+    for (const ColorMapEdit& e : colorMaps_) {
+        const std::string path = "/materials/" + std::to_string(e.material) + "/particle_color";
+        if (e.map != "none")
+            ops.push_back("{\"op\": \"add\", \"path\": \"" + path + "\", \"value\": {\"map\": \"" +
+                          e.map + "\", \"range\": [" + jsonNumber(e.range.x) + ", " +
+                          jsonNumber(e.range.y) + "]}}");
+        else if (e.fileHadColor)
+            ops.push_back("{\"op\": \"remove\", \"path\": \"" + path + "\"}");
     }
     if (!transport_.empty())
-        out += std::string(edits_.empty() ? "" : ", ") +
-               "{\"op\": \"add\", \"path\": \"/render/light_transport\", \"value\": " + transport_ +
-               "}";
+        ops.push_back("{\"op\": \"add\", \"path\": \"/render/light_transport\", \"value\": " +
+                      transport_ + "}");
     if (!method_.empty())
-        out += std::string(edits_.empty() && transport_.empty() ? "" : ", ") +
-               "{\"op\": \"add\", \"path\": \"/render/light_transport/method\", \"value\": \"" +
-               method_ + "\"}";
+        ops.push_back(
+            "{\"op\": \"add\", \"path\": \"/render/light_transport/method\", \"value\": \"" +
+            method_ + "\"}");
+    std::string out = "[";
+    for (size_t i = 0; i < ops.size(); ++i) out += (i ? ", " : "") + ops[i];
     return out + "]";
 }
 

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "core/animation_targets.h"
 #include "core/scene.h"
 
@@ -51,23 +53,44 @@ public:
     void setTransport(const Scene& scene, const std::string& mergePatch);
     const std::string& transport() const { return transport_; }  // "": the scene's
 
+    // Material `material`'s particle colour (core/particle_color.h) by a colour map's name, or
+    // "none" for no tint; "--edit /materials/i/particle_color=NAME" too. The map spans the values
+    // the material's colour spanned in `scene` (its map's range, or its points' first and last
+    // values; [0, 1] where it had none). Throws eikon::Error at "--edit" for a material the scene
+    // file does not list or a name that is not a map, listing the maps.
+    void setColorMap(const Scene& scene, size_t material, const std::string& name);
+
+    // Keeps every edit of `scripted` (made against `scene`) over this one's.
+    void adopt(const Scene& scene, const ViewEdits& scripted);
+
     // Writes every edit into `frame` (a frame's scene, its tracks evaluated).
     void apply(Scene& frame) const;
 
     const std::vector<ViewEdit>& edits() const { return edits_; }
-    bool empty() const { return edits_.empty() && method_.empty() && transport_.empty(); }
+    bool empty() const {
+        return edits_.empty() && method_.empty() && transport_.empty() && colorMaps_.empty();
+    }
 
     // The edits as a JSON Patch (RFC 6902) of the scene file, on one line: what keeps them
     // (Python's jsonpatch, or by hand). Its operations are "add", which replaces a member that is
     // there and adds one the file left at its default, where "replace" would fail. A method's
     // operation adds /render/light_transport/method, which needs a "light_transport" object
-    // in the file's "render" ({} will do); settings add the whole section.
+    // in the file's "render" ({} will do); settings add the whole section. A colour map adds the
+    // material's "particle_color" as {"map": NAME, "range": [LOW, HIGH]}; "none" removes it
+    // where the file had one.
     std::string jsonPatch() const;
 
 private:
     std::vector<ViewEdit> edits_;
     std::string method_;
     std::string transport_;  // the whole render.light_transport section, compact JSON
+    struct ColorMapEdit {
+        size_t material;
+        std::string map;  // a colour map's name, or "none"
+        glm::vec2 range;
+        bool fileHadColor;  // the scene file gave the material a particle colour
+    };
+    std::vector<ColorMapEdit> colorMaps_;
 };
 
 }  // namespace eikon::app

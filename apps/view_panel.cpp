@@ -8,6 +8,7 @@
 #include <imgui_stdlib.h>
 
 #include "core/error.h"
+#include "core/particle_color.h"
 #include "render/light_transport_registry.h"
 
 namespace eikon::app {
@@ -50,6 +51,23 @@ public:
         if (!editable(pointer)) return;
         if (ImGui::ColorEdit3(label, &value.x, ImGuiColorEditFlags_Float))
             keep(pointer, {value.x, value.y, value.z});
+    }
+
+    // Material `material`'s particle colour: "none" or a colour map by name; a point function
+    // shows as "points" until a map replaces it.
+    void colorMap(size_t material, const ParticleColorSpec& shownColor) {
+        const std::string current = !shownColor.map.empty()      ? shownColor.map
+                                    : !shownColor.points.empty() ? "points"
+                                                                 : "none";
+        if (!ImGui::BeginCombo("particle colour", current.c_str())) return;
+        std::vector<std::string> names = {"none"};
+        for (const std::string& name : colorMapNames()) names.push_back(name);
+        for (const std::string& name : names)
+            if (ImGui::Selectable(name.c_str(), name == current) && name != current) {
+                edits_.setColorMap(shown_, material, name);
+                requests_.edited = true;
+            }
+        ImGui::EndCombo();
     }
 
 private:
@@ -109,6 +127,7 @@ void materialRows(const Scene& shown, Editor& editor) {
         const std::string title = "material " + m.name + "##material" + std::to_string(i);
         if (!ImGui::TreeNode(title.c_str())) continue;
         opticsRows(m, &m, "/materials/" + std::to_string(i) + "/", editor);
+        editor.colorMap(i, m.particleColor);
         ImGui::TreePop();
     }
     for (size_t i = 0; i < shown.meshes.size(); ++i) {

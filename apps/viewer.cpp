@@ -236,10 +236,7 @@ void Viewer::render() {
     const bool scriptedNow = options_.drag && s.frames == 1;
     if (scriptedNow) s.pendingDrag += options_.drag->pixels, s.dirty = true;
     if (!options_.edits.empty() && s.frames == 1) {
-        for (const ViewEdit& e : options_.edits.edits()) edits_.set(e);
-        if (!options_.edits.transport().empty())
-            edits_.setTransport(scene_, options_.edits.transport());
-        if (!options_.edits.method().empty()) edits_.setMethod(options_.edits.method());
+        edits_.adopt(scene_, options_.edits);
         options_.edits = ViewEdits{};
         std::printf("edited; to keep the edits, patch the scene with %s\n",
                     edits_.jsonPatch().c_str());

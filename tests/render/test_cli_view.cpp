@@ -233,6 +233,58 @@ TEST_CASE("eikon view --edit reruns only the stages it touches, and its JSON Pat
 #endif
 }
 
+// A material's colour map (the panel's "particle colour" list, --edit with a map's name): the
+// edited picture is the scene's with that particle colour, byte for byte, and the JSON Patch
+// printed says so; "none" takes a colour away, and removes it from the file where it was.
+TEST_CASE("eikon view --edit picks a material's colour map, and its JSON Patch keeps it",
+          "[cli][view][edit][release_only]") {
+#ifndef EIKON_XVFB_RUN
+    WARN("xvfb-run was not found when this test was built: the viewer cannot run");
+#else
+    const std::string dir = scratchDir("cli_view_color_map");
+    const std::string scene = sourcePath("data/scenes/glass_sphere_fog.json");
+    const std::string xvfb = quoted(EIKON_XVFB_RUN) + " -a";
+    const std::string common = " --size 64x48 --backend cpu --exit-after 2 --screenshot ";
+    const RunResult edited =
+        runEikon("view " + quoted(scene) + common + quoted(dir + "/edited.png") +
+                     " --edit /materials/0/particle_color=viridis"
+                     " --edit /materials/0/particle_color=magma",
+                 dir, xvfb);
+    INFO("stdout:\n" << edited.out << "stderr:\n" << edited.err);
+    REQUIRE(edited.exitCode == 0);
+    // The later edit of one material replaces the earlier; the range is the default's.
+    CHECK(edited.out.find("patch the scene with [{\"op\": \"add\", \"path\": "
+                          "\"/materials/0/particle_color\", \"value\": {\"map\": \"magma\", "
+                          "\"range\": [0, 1]}}]") != std::string::npos);
+    const RunResult plain =
+        runEikon("view " + quoted(scene) + common + quoted(dir + "/plain.png"), dir, xvfb);
+    REQUIRE(plain.exitCode == 0);
+    CHECK(readFile(dir + "/plain.png") != readFile(dir + "/edited.png"));
+
+    // The patch applied by hand: the fog tinted by magma in the file.
+    std::string text = readFile(scene);
+    const std::string from = "\"g\": 0.3 }";
+    REQUIRE(text.find(from) != std::string::npos);
+    text.replace(text.find(from), from.size(), "\"g\": 0.3, \"particle_color\": \"magma\" }");
+    writeFile(dir + "/patched.json", text);
+    const RunResult patched = runEikon(
+        "view " + quoted(dir + "/patched.json") + common + quoted(dir + "/patched.png"), dir, xvfb);
+    INFO("stdout:\n" << patched.out << "stderr:\n" << patched.err);
+    REQUIRE(patched.exitCode == 0);
+    CHECK(readFile(dir + "/patched.png") == readFile(dir + "/edited.png"));
+
+    // "none" on the patched file: the plain picture, and the patch removes the colour.
+    const RunResult none =
+        runEikon("view " + quoted(dir + "/patched.json") + common + quoted(dir + "/none.png") +
+                     " --edit /materials/0/particle_color=none",
+                 dir, xvfb);
+    REQUIRE(none.exitCode == 0);
+    CHECK(none.out.find("[{\"op\": \"remove\", \"path\": \"/materials/0/particle_color\"}]") !=
+          std::string::npos);
+    CHECK(readFile(dir + "/none.png") == readFile(dir + "/plain.png"));
+#endif
+}
+
 TEST_CASE("a bad --edit fails before the window opens, in one line", "[cli][view][edit]") {
     const std::string dir = scratchDir("cli_view_bad_edit");
     const std::string scene = quoted(sourcePath("data/scenes/glass_sphere_fog.json"));
@@ -248,6 +300,9 @@ TEST_CASE("a bad --edit fails before the window opens, in one line", "[cli][view
         {"/lights/0/intensity=2x", "not finite numbers"},
         {"/render/light_transport/method=rays",
          "no light-transport method 'rays' (there are auto, "},
+        {"/materials/0/particle_color=teal", "no colour map 'teal' (there are none, viridis"},
+        {"/materials/5/particle_color=magma", "no materials 5"},
+        {"/materials/x/particle_color=magma", "'x' is not a material's index"},
     };
     for (const auto& c : cases) {
         const RunResult r = runEikon("view " + scene + " --edit " + quoted(c.edit), dir);
