@@ -16,6 +16,15 @@ constexpr std::int64_t kMaxPlanesPerVoxel = 16;
 // Each refinement costs a bilinear fetch and a ∇n sample; two already reach the float's digits.
 constexpr std::int64_t kMaxRefinements = 4;
 
+// A texel is the sweep's particle: it takes a step a plane.
+TransportStats sweepStats(const PlaneSweepResultCpu& result) {
+    TransportStats stats;
+    stats.steps = result.texelSteps;
+    stats.particlesTraced = result.texels;
+    stats.particlesCut = result.texelsLost;
+    return stats;
+}
+
 }  // namespace
 
 PlaneSweepTransportSettings readPlaneSweepTransportSettings(const json::Value* section) {
@@ -94,11 +103,7 @@ void PlaneSweepTransport::runCpu(const TransportInputsCpu& in) {
     StageScope stage(in.timer, "plane_sweep");
     result_ = sweepLightsCpu(in.setup, in.slotGrids, in.gradient, settings_.sweep, {},
                              in.channelGradients);
-    stats_ = TransportStats{};
-    // A texel is the sweep's particle: it takes a step a plane.
-    stats_.steps = result_.texelSteps;
-    stats_.particlesTraced = result_.texels;
-    stats_.particlesCut = result_.texelsLost;
+    stats_ = sweepStats(result_);
 }
 
 Image PlaneSweepTransport::runWithViewCpu(const TransportInputsCpu& in, const Image* environment) {
@@ -106,10 +111,7 @@ Image PlaneSweepTransport::runWithViewCpu(const TransportInputsCpu& in, const Im
                                                     settings_.sweep, environment, in.timer);
     result_ = std::move(frame.sweep);
     result_.memory.viewBytes = frame.windowBytes + frame.rayBytes;
-    stats_ = TransportStats{};
-    stats_.steps = result_.texelSteps;
-    stats_.particlesTraced = result_.texels;
-    stats_.particlesCut = result_.texelsLost;
+    stats_ = sweepStats(result_);
     stats_.viewSteps = frame.viewSteps;
     stats_.viewSamplesBehind = frame.samplesBehind;
     return std::move(frame.image);
