@@ -20,6 +20,7 @@
 #include "render/transport/plane_sweep/plane_sweep_transport.h"
 #include "support/light_transport_setup.h"
 #include "support/scene_builders.h"
+#include "support/test_paths.h"
 
 using namespace eikon;
 
@@ -87,6 +88,20 @@ TEST_CASE("interleaved view: rays bent by a lens, and a light move, give the vol
     const Scene moved = interleaved(scene);
     CHECK(sameBits(renderer.render(FrameInputs(0, moved)), render(scene)));
     CHECK(renderer.transportRuns("plane_sweep") == 2);
+}
+
+TEST_CASE("interleaved view: a CT scan lit from the camera's side gives the volume path's frame",
+          "[plane_sweep][interleaved]") {
+    // data/scenes/ct_tooth.json (the shared tooth scan, a refracting tissue class) with its light
+    // turned to the camera's side, which looks along +y: the sweeps cross the same y planes.
+    Scene scene = loadScene(test::sourcePath("data/scenes/ct_tooth.json"));
+    scene.lights[0].direction = glm::normalize(glm::vec3(-0.5f, 0.77f, -0.4f));
+    scene.render.width = 40;
+    scene.render.height = 50;
+    test::setTransportMethod(scene, "plane_sweep");
+    FrameRenderer renderer(interleaved(scene), Backend::Cpu);
+    CHECK(sameBits(renderer.render(0), render(scene)));
+    CHECK(renderer.lastTransportStats().viewSamplesBehind == 0);
 }
 
 TEST_CASE("interleaved view: the same bytes on one thread as on all",
