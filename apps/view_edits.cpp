@@ -105,7 +105,8 @@ void ViewEdits::add(const Scene& scene, const std::string& text) {
         pointer.compare(pointer.size() - colorKey.size(), colorKey.size(), colorKey) == 0) {
         const std::string index =
             pointer.substr(materials.size(), pointer.size() - materials.size() - colorKey.size());
-        if (index.find_first_not_of("0123456789") != std::string::npos || index.size() > 6)
+        if (index.empty() || index.find_first_not_of("0123456789") != std::string::npos ||
+            index.size() > 6)
             throw Error("--edit", "'" + pointer + "' in " + scene.path + ": '" + index +
                                       "' is not a material's index");
         setColorMap(scene, std::stoul(index), text.substr(equals + 1));
