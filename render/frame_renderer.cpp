@@ -107,9 +107,15 @@ std::vector<unsigned char> octreeInputs(const ViewSetup& setup,
     appendBytes(key, &settings, sizeof(settings));
     if (settings.kappaTolerance > 0.0f)
         for (int m = 0; m < shared::materialCount(setup.params); ++m) {
-            appendBytes(key, &setup.params.materials[m].absorption, sizeof(glm::vec4));
-            appendBytes(key, &setup.params.materials[m].scattering, sizeof(glm::vec4));
-            appendBytes(key, &setup.params.materials[m].slot, sizeof(glm::ivec4));  // clip masks
+            // κ's inputs only: not g (absorption.w), n's (scattering.w, in the gradient's key),
+            // the sharp surfaces or the particle colour's slot (slot.y, slot.w), which a
+            // viewer's edit of a phase function or a colour map would otherwise rebuild it for.
+            const shared::GpuMaterial& mat = setup.params.materials[m];
+            const glm::vec3 absorption(mat.absorption), scattering(mat.scattering);
+            const glm::ivec2 slotAndClips(mat.slot.x, mat.slot.z);
+            appendBytes(key, &absorption, sizeof(absorption));
+            appendBytes(key, &scattering, sizeof(scattering));
+            appendBytes(key, &slotAndClips, sizeof(slotAndClips));
         }
     if (settings.kappaTolerance > 0.0f)
         appendBytes(key, setup.params.clipPlanes, sizeof(setup.params.clipPlanes));

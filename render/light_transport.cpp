@@ -98,6 +98,9 @@ std::vector<unsigned char> transportInputsKey(const ViewSetup& setup,
     for (glm::vec4& c : p.particleColors) c = glm::vec4(0.0f);
     for (glm::vec4& c : p.particleColorIntegrals) c = glm::vec4(0.0f);
     for (shared::GpuMaterial& m : p.materials) m.slot.w = 0;
+    // The phase function's g shades only the view too: the methods carry flux and its mean
+    // direction, and the view applies the phase function to them.
+    for (shared::GpuMaterial& m : p.materials) m.absorption.w = 0.0f;
     // Sized first and copied into, not appended to an empty vector: GCC 12 warns (a false
     // -Wstringop-overflow) on insert() into an empty vector at this size.
     std::vector<unsigned char> key(sizeof(p));

@@ -235,7 +235,8 @@ TEST_CASE("eikon view --edit reruns only the stages it touches, and its JSON Pat
 
 // A material's colour map (the panel's "particle colour" list, --edit with a map's name): the
 // edited picture is the scene's with that particle colour, byte for byte, and the JSON Patch
-// printed says so; "none" takes a colour away, and removes it from the file where it was.
+// printed says so; "none" takes a colour away, and removes it from the file where it was. A
+// colour, like the phase function's g, reruns the view alone.
 TEST_CASE("eikon view --edit picks a material's colour map, and its JSON Patch keeps it",
           "[cli][view][edit][release_only]") {
 #ifndef EIKON_XVFB_RUN
@@ -256,6 +257,18 @@ TEST_CASE("eikon view --edit picks a material's colour map, and its JSON Patch k
     CHECK(edited.out.find("patch the scene with [{\"op\": \"add\", \"path\": "
                           "\"/materials/0/particle_color\", \"value\": {\"map\": \"magma\", "
                           "\"range\": [0, 1]}}]") != std::string::npos);
+    // A colour reruns only the view: the octree and the photons are the first frame's (whose
+    // preview traced lighter once).
+    CHECK(edited.out.find("gradients 1, octrees 1, photons runs 1, lighter previews 1") !=
+          std::string::npos);
+    // So does the phase function's g, which only the view applies.
+    const RunResult phase = runEikon("view " + quoted(scene) + common + quoted(dir + "/phase.png") +
+                                         " --edit /materials/0/g=0.5",
+                                     dir, xvfb);
+    INFO("stdout:\n" << phase.out << "stderr:\n" << phase.err);
+    REQUIRE(phase.exitCode == 0);
+    CHECK(phase.out.find("gradients 1, octrees 1, photons runs 1, lighter previews 1") !=
+          std::string::npos);
     const RunResult plain =
         runEikon("view " + quoted(scene) + common + quoted(dir + "/plain.png"), dir, xvfb);
     REQUIRE(plain.exitCode == 0);

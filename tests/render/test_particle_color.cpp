@@ -220,7 +220,8 @@ TEST_CASE("Particle colours on the GPU equal the CPU twin", "[particle_color][gp
     CHECK(worst <= 1e-5f * largest);
 }
 
-TEST_CASE("A new colour map reruns the view, not the light transport", "[particle_color]") {
+TEST_CASE("A new colour map or phase function reruns the view, not the light transport",
+          "[particle_color]") {
     Scene scene = litFogBall(12, 8);
     FrameRenderer renderer(scene, Backend::Cpu);
     const Image first = renderer.render(0);
@@ -233,7 +234,10 @@ TEST_CASE("A new colour map reruns the view, not the light transport", "[particl
     size_t differ = 0;
     for (size_t i = 0; i < first.pixels.size(); ++i) differ += first.pixels[i] != second.pixels[i];
     CHECK(differ > first.pixels.size() / 4);  // the fog changed colour
-    next.materials[0].scattering *= 2.0f;     // extinction: the light is traced again
+    next.materials[0].g = 0.5f;               // the phase function, which only the view applies
+    renderer.render({0, next});
+    CHECK(renderer.transportRuns("light_volumes") == 1);
+    next.materials[0].scattering *= 2.0f;  // extinction: the light is traced again
     renderer.render({0, next});
     CHECK(renderer.transportRuns("light_volumes") == 2);
 }
