@@ -149,6 +149,12 @@ glm::ivec3 readSizes(const NrrdFields& fields) {
     return dims;
 }
 
+// Spacings eikon takes, scene units between samples: OpenVDB refuses a transform whose scale is
+// within its tolerance of zero (ArithmeticError, found by fuzz_nrrd with a 5e-30 spacing), and
+// beyond 1e6 a scan's extent leaves float.
+constexpr double kMinScanSpacing = 1e-6;
+constexpr double kMaxScanSpacing = 1e6;
+
 // "(1.4,0,0) (0,1.4,0) (0,0,2.5)": each axis's step in space. Their lengths are the spacing; an
 // axis that is not along x, y, z (an oblique scan) or points backwards (a flip) is placed along
 // its own axis, said once, since the render volume is axis-aligned.
@@ -174,7 +180,8 @@ glm::dvec3 readSpaceDirections(const NrrdFields& fields, const std::string& path
                 fields.fail("space directions", expected);
         }
         spacing[a] = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        if (!(spacing[a] > 0.0)) fields.fail("space directions", "non-zero vectors");
+        if (!(spacing[a] >= kMinScanSpacing && spacing[a] <= kMaxScanSpacing))
+            fields.fail("space directions", "vectors 1e-6 to 1e6 long");
         reoriented |= v[a] <= 0.0 || std::abs(v[a]) < spacing[a] * (1.0 - 1e-9);
     }
     if (reoriented)
@@ -190,8 +197,9 @@ glm::dvec3 readSpacings(const NrrdFields& fields) {
     glm::dvec3 spacing;
     for (int a = 0; a < 3; ++a) {
         // NaN marks a non-spatial axis in NRRD; all three axes of a volume are spatial.
-        if (!parseReal(parts[a], spacing[a]) || spacing[a] <= 0.0)
-            fields.fail("spacings", "three positive numbers");
+        if (!parseReal(parts[a], spacing[a]) ||
+            !(spacing[a] >= kMinScanSpacing && spacing[a] <= kMaxScanSpacing))
+            fields.fail("spacings", "three numbers from 1e-6 to 1e6");
     }
     return spacing;
 }

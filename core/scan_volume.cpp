@@ -134,6 +134,12 @@ public:
           options_(options),
           grid_(openvdb::FloatGrid::create(0.0f)),
           accessor_(grid_->tree()) {
+        // OpenVDB throws ArithmeticError for a scale near zero: the readers refuse such spacings
+        // (scan_layout.cpp); a layout made by hand is refused here.
+        for (int a = 0; a < 3; ++a)
+            if (!(layout.spacing[a] >= 1e-6 && layout.spacing[a] <= 1e6))
+                throw Error(layout.header, "a spacing of " + formatNumber(layout.spacing[a]) +
+                                               " between samples (eikon takes 1e-6 to 1e6)");
         openvdb::math::Transform::Ptr xform = openvdb::math::Transform::createLinearTransform(1.0);
         xform->preScale(openvdb::Vec3d(layout.spacing.x, layout.spacing.y, layout.spacing.z));
         xform->postTranslate(openvdb::Vec3d(layout.origin.x, layout.origin.y, layout.origin.z));

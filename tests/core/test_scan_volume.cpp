@@ -203,7 +203,10 @@ TEST_CASE("NRRD headers that are wrong get one line naming the field", "[scan]")
     check(header("uchar", "raw", "datafile: v%03d.raw\n"),
           "NRRD field \"datafile\": expected one file");
     check(header("uchar", "raw", "spacings: 1 0 1\n\n") + data,
-          "NRRD field \"spacings\": expected three positive numbers");
+          "NRRD field \"spacings\": expected three numbers from 1e-6 to 1e6");
+    // A spacing OpenVDB's transform cannot scale by (fuzz_nrrd: an ArithmeticError escaped).
+    check(header("uchar", "raw", "space directions: (1,0,0) (0,1e-30,0) (0,0,1)\n\n") + data,
+          "NRRD field \"space directions\": expected vectors 1e-6 to 1e6 long");
     check(header("uchar", "raw", "space directions: (1,0,0) (0,1,0)\n\n") + data,
           "NRRD field \"space directions\": expected three vectors");
     check(header("uchar", "raw"), "the header ends without a blank line");

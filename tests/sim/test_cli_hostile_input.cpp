@@ -95,7 +95,7 @@ TEST_CASE("eikon info on the fuzzing regressions: a report or one error line", "
     // decoded); the others are one error line. Never a crash, a timeout or "internal error".
     const std::string dir = scratchDir("cli_fuzz_regressions");
     int inputs = 0;
-    for (const char* format : {"vdb", "obj", "off", "ply", "stl"}) {
+    for (const char* format : {"vdb", "obj", "off", "ply", "stl", "nrrd"}) {
         const std::filesystem::path folder =
             eikon::test::sourcePath(std::string("tests/fuzz/regressions/") + format);
         if (!std::filesystem::is_directory(folder)) continue;
