@@ -296,8 +296,10 @@ Image FrameRenderer::render(int frame) {
     }
 
     if (backend_ == Backend::Cpu && interleaved) {  // it times its stages, the view's included
-        Image image = used->runWithViewCpu(
-            {setup, slotGrids, gradientCpu_, octreeCpu_, timer_.get(), nullptr}, &environment);
+        Image image =
+            used->runWithViewCpu({setup, slotGrids, gradientCpu_, octreeCpu_, timer_.get(),
+                                  disperses ? &channelGradientsCpu_ : nullptr},
+                                 &environment);
         lastTransportStats_ = used->stats();
         transportSteps_ += lastTransportStats_.steps;
         ++transportRuns_[used->name()];

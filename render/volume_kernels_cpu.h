@@ -101,6 +101,22 @@ struct ViewKernelCpu : VolumeAccessCpu {
             window.behind->fetch_add(1, std::memory_order_relaxed);
         return true;
     }
+    // A view ray's hit on a receiver, kept to be shaded once the receiver's irradiance is complete
+    // (the interleaved view: a plane receiver's map fills as the planes pass it, after the rays
+    // that see it). receiver < 0: none.
+    struct ReceiverHit {
+        int receiver = -1;
+        vec3 x = vec3(0.0f);
+        bool front = false;
+        vec3 weight = vec3(0.0f);  // the ray's transmittance where it met the receiver
+    };
+    // Where receiverDeferred keeps the hit of the ray being advanced; null: none is deferred.
+    ReceiverHit* deferredReceiverHit = nullptr;
+    bool receiverDeferred(int r, vec3 x, bool front, vec3 weight) const {
+        if (!deferredReceiverHit) return false;
+        *deferredReceiverHit = ReceiverHit{r, x, front, weight};
+        return true;
+    }
 
     // clang-format off
 #include "shaders/shared/environment.h"

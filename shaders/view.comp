@@ -14,6 +14,8 @@ vec4 fetchReceiverTexel(int index) { return receiverTexels[index]; }
 // Every sample is ready: the volumes are whole (the plane sweep's interleaved view, whose are not,
 // runs on the CPU twin: render/transport/plane_sweep/plane_sweep_view.h).
 bool viewSampleReady(vec3 p) { return true; }
+// Receivers are shaded where the rays meet them: their maps are complete.
+bool receiverDeferred(int r, vec3 x, bool front, vec3 weight) { return false; }
 
 #include "shared/environment.h"
 #include "shared/material_index.h"

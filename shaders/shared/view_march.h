@@ -7,7 +7,12 @@
 // reflection. Curved rays crossing the sharp surface of a refracting material (fresnel.h) keep
 // 1 − R of their transmittance and see R of what lies in the mirror direction. Needs
 // optics.h, receivers.h, ray_equation.h, environment.h, fresnel.h and, from the includer,
-// `vec4 fetchReceiverTexel(int index)`: the irradiance (rgb) of a texel of the receiver map.
+// `vec4 fetchReceiverTexel(int index)`: the irradiance (rgb) of a texel of the receiver map;
+// `bool viewSampleReady(vec3 p)`: whether a step's sample may be shaded now; and
+// `bool receiverDeferred(int r, vec3 x, bool front, vec3 weight)`: whether the includer takes a
+// receiver hit to shade later (weight × receiverRadiance, added to the ray's radiance), when its
+// irradiance is not complete yet. Both are true and false on the GPU; the plane sweep's
+// interleaved view (CPU twin) defers.
 
 // Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0.
 float stepWeight(float kappa, float s) {
@@ -300,7 +305,8 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
         r.v = vNext;
         r.exitDir = normalize(r.v);
         if (receiver >= 0) {  // opaque: nothing behind it shows
-            if (r.shade) r.radiance += r.transmittance * receiverRadiance(receiver, r.x, front);
+            if (r.shade && !receiverDeferred(receiver, r.x, front, r.transmittance))
+                r.radiance += r.transmittance * receiverRadiance(receiver, r.x, front);
             r.transmittance = vec3(0.0f);
             ++r.steps;
             break;
@@ -403,7 +409,8 @@ int straightRayAdvance(EK_INOUT(StraightRay) r) {
         if (receiver >= 0) {  // opaque: nothing behind it shows
             const vec3 hit =
                 receiverHitPoint(receiver, r.origin + r.dir * t0, r.origin + r.dir * tEnd, tHit);
-            r.radiance += r.transmittance * receiverRadiance(receiver, hit, front);
+            if (!receiverDeferred(receiver, hit, front, r.transmittance))
+                r.radiance += r.transmittance * receiverRadiance(receiver, hit, front);
             r.transmittance = vec3(0.0f);
             ++r.step;
             break;

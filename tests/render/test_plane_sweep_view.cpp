@@ -104,6 +104,51 @@ TEST_CASE("interleaved view: a CT scan lit from the camera's side gives the volu
     CHECK(renderer.lastTransportStats().viewSamplesBehind == 0);
 }
 
+TEST_CASE("interleaved view: a wall behind the fog, plane or voxel receiver, as the volume path",
+          "[plane_sweep][interleaved]") {
+    // A receiver across z behind the lens, facing the camera and the light: the rays that meet it
+    // keep the hit until its light is complete (a plane receiver's map after the last plane, a
+    // voxel receiver's slices in front of it), then add what the view pass adds at the hit.
+    for (const ReceiverMethod method : {ReceiverMethod::Plane, ReceiverMethod::Voxels})
+        for (const bool refracting : {true, false}) {
+            CAPTURE(int(method), refracting);
+            Scene scene = lensInFog(20, refracting);
+            ReceiverSpec wall;
+            wall.axis = 2;
+            wall.position = -0.7f;
+            wall.facing = 1;
+            wall.albedo = glm::vec3(0.7f, 0.6f, 0.5f);
+            wall.method = method;
+            scene.receivers.push_back(wall);
+            FrameRenderer renderer(interleaved(scene), Backend::Cpu);
+            const Image image = renderer.render(0);
+            CHECK(sameBits(image, render(scene)));
+            CHECK(renderer.lastTransportStats().viewSamplesBehind == 0);
+            // The wall shows: the middle of the picture is brighter than without it.
+            scene.receivers.clear();
+            const Image bare = render(interleaved(scene));
+            CHECK(image.at(20, 15).x > bare.at(20, 15).x + 0.01f);
+        }
+}
+
+TEST_CASE("interleaved view: a dispersing lens gives the volume path's frame, bit for bit",
+          "[plane_sweep][interleaved]") {
+    // The lens of a dense flint's spread (abbe 20): each light is swept once a channel, each
+    // channel's light and view rays bending with its own n, as the volume path does.
+    Scene scene = lensInFog(24);
+    scene.materials[1].abbe = 20.0f;
+    FrameRenderer renderer(interleaved(scene), Backend::Cpu);
+    const Image image = renderer.render(0);
+    CHECK(sameBits(image, render(scene)));
+    CHECK(renderer.lastTransportStats().viewSamplesBehind == 0);
+    // Three sweeps of each plane's texels, and a picture the spread changes.
+    scene.materials[1].abbe = 0.0f;
+    FrameRenderer plain(interleaved(scene), Backend::Cpu);
+    const Image unspread = plain.render(0);
+    CHECK(renderer.lastTransportStats().steps == 3 * plain.lastTransportStats().steps);
+    CHECK_FALSE(sameBits(image, unspread));
+}
+
 TEST_CASE("interleaved view: the same bytes on one thread as on all",
           "[plane_sweep][interleaved]") {
     const Scene scene = interleaved(lensInFog(20));

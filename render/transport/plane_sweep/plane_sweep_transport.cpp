@@ -107,8 +107,9 @@ void PlaneSweepTransport::runCpu(const TransportInputsCpu& in) {
 }
 
 Image PlaneSweepTransport::runWithViewCpu(const TransportInputsCpu& in, const Image* environment) {
-    InterleavedViewCpu frame = renderInterleavedCpu(in.setup, in.slotGrids, in.gradient,
-                                                    settings_.sweep, environment, in.timer);
+    InterleavedViewCpu frame =
+        renderInterleavedCpu(in.setup, in.slotGrids, in.gradient, settings_.sweep, environment,
+                             in.channelGradients, in.timer);
     result_ = std::move(frame.sweep);
     result_.memory.viewBytes = frame.windowBytes + frame.rayBytes;
     stats_ = sweepStats(result_);

@@ -15,7 +15,9 @@
 // they would read the whole volume, so where the sweeps cross the same planes the image is the
 // volume path's to the bit; what differs: reflections at sharp surfaces are seen in the
 // environment (the view pass traces two through the volume, back toward the camera, against
-// the sweep).
+// the sweep). A ray that meets a receiver keeps the hit (receiverDeferred) and is shaded once
+// the receiver's light is complete: a voxel receiver's when the slices in front of it are held,
+// a plane receiver's map after the last plane (it fills as the planes pass it).
 //
 // CPU twin only (its GPU port keeps the ray states in buffers between dispatches; not yet).
 #include <cstdint>
@@ -34,8 +36,7 @@ SweepAxis interleavedSweepAxis(const ViewSetup& setup);
 
 // Throws eikon::Error (at `where`, the settings' JSON pointer) for what the interleaved view
 // cannot do: a camera inside the slab of planes or beside it (its rays must cross them front to
-// back), a light that does not cross them forward with at least min_cosine, receivers (their
-// maps fill as the planes pass them, after the rays that see them), dispersion.
+// back), a light that does not cross them forward with at least min_cosine.
 void checkInterleavedView(const ViewSetup& setup, const PlaneSweepSettings& settings,
                           const std::string& where);
 
@@ -56,12 +57,16 @@ struct InterleavedViewCpu {
 };
 
 // Sweeps every light of the fluence beside the view rays and returns the frame.
-// `gradient`: the ∇n volume; `environment`: as renderViewCpu's. The timer (null: none) gets the
-// sweeps' share as stage "plane_sweep" and the rays' as "view".
+// `gradient`: the ∇n volume; `environment`: as renderViewCpu's. Under dispersion
+// (dispersesView, curved rays) `channelGradients` holds the red and blue channels' ∇n volumes:
+// each light is swept once a channel and each pixel has a ray a channel, as the volume path has.
+// The timer (null: none) gets the sweeps' share as stage "plane_sweep" and the rays' as "view".
 InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
                                         const std::vector<const DenseGrid*>& slotGrids,
                                         const RefractionVolumeCpu& gradient,
                                         const PlaneSweepSettings& settings,
-                                        const Image* environment, GpuStageTimer* timer = nullptr);
+                                        const Image* environment,
+                                        const ChannelGradientsCpu* channelGradients = nullptr,
+                                        GpuStageTimer* timer = nullptr);
 
 }  // namespace eikon

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "render/light_transport.h"
 #include "render/transport/plane_sweep/plane_sweep_view.h"
+#include "render/view_params.h"
 #include "render/volume_kernels_cpu.h"
 
 namespace eikon {
@@ -31,10 +32,13 @@ struct PixelRay {
 };
 using CurvedRayCpu = shared::ViewKernelCpu::CurvedRay;
 using StraightRayCpu = shared::ViewKernelCpu::StraightRay;
+using ReceiverHit = shared::ViewKernelCpu::ReceiverHit;
 
-// The bytes of one pixel's ray.
-size_t rayBytes(bool curved) {
-    return sizeof(PixelRay) + (curved ? sizeof(CurvedRayCpu) : sizeof(StraightRayCpu));
+// The bytes of one pixel's ray, and of its receiver hit where there are receivers.
+size_t rayBytes(const shared::GpuViewParams& p) {
+    return sizeof(PixelRay) +
+           (shared::curvedRays(p) ? sizeof(CurvedRayCpu) : sizeof(StraightRayCpu)) +
+           (shared::receiverCount(p) > 0 ? sizeof(ReceiverHit) : 0);
 }
 
 // The slices of the fluence and mean-direction volumes held. Every kWindowSlices − 1 slices the
@@ -53,8 +57,9 @@ size_t windowBytes(const shared::GpuViewParams& p, const SweepAxis& axis) {
 
 size_t interleavedViewBytes(const ViewSetup& setup) {
     const shared::GpuViewParams& p = setup.params;
+    const size_t channels = shared::curvedRays(p) && dispersesView(setup) ? 3 : 1;
     return windowBytes(p, interleavedSweepAxis(setup)) +
-           size_t(p.image.x) * size_t(p.image.y) * rayBytes(shared::curvedRays(p));
+           size_t(p.image.x) * size_t(p.image.y) * channels * rayBytes(p);
 }
 
 SweepAxis interleavedSweepAxis(const ViewSetup& setup) {
@@ -75,12 +80,6 @@ void checkInterleavedView(const ViewSetup& setup, const PlaneSweepSettings& sett
                                "the face its rays enter through (" +
                                name + (axis.order > 0 ? " <= " : " >= ") + std::to_string(entry) +
                                "; the camera is at " + name + " = " + std::to_string(camera) + ")");
-    if (shared::receiverCount(p) > 0)
-        throw Error(where,
-                    "the interleaved view does not show receivers yet (their maps fill as "
-                    "the planes pass them); use \"view\": \"volume\"");
-    if (dispersesView(setup))
-        throw Error(where, "the interleaved view does not disperse yet; use \"view\": \"volume\"");
     for (int l = 0; l < shared::lightCount(p); ++l) {
         if (!shared::lightInFluence(p, l)) continue;
         const shared::GpuLight& light = p.lights[l];
@@ -97,17 +96,23 @@ void checkInterleavedView(const ViewSetup& setup, const PlaneSweepSettings& sett
     }
 }
 
-InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
-                                        const std::vector<const DenseGrid*>& slotGrids,
-                                        const RefractionVolumeCpu& gradient,
-                                        const PlaneSweepSettings& settings,
-                                        const Image* environment, GpuStageTimer* timer) {
+InterleavedViewCpu renderInterleavedCpu(
+    const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
+    const RefractionVolumeCpu& gradient, const PlaneSweepSettings& settings,
+    const Image* environment, const ChannelGradientsCpu* channelGradients, GpuStageTimer* timer) {
     const shared::GpuViewParams& p = setup.params;
     const SweepAxis axis = interleavedSweepAxis(setup);
+    const bool curved = shared::curvedRays(p);
+    const bool dispersed = curved && dispersesView(setup);
+    if (dispersed && (!channelGradients || channelGradients->red.size() != gradient.size() ||
+                      channelGradients->blue.size() != gradient.size()))
+        throw Error("interleaved view (CPU)",
+                    "dispersion needs the red and blue channels' gradient volumes");
     InterleavedViewCpu out;
     SweepReceiversCpu receivers(setup, settings);
     std::vector<std::unique_ptr<LightSweepCpu>> sweeps;
-    for (const LightSweepSpec& spec : lightSweepSpecs(setup, gradient, settings, nullptr, &axis))
+    for (const LightSweepSpec& spec :
+         lightSweepSpecs(setup, gradient, settings, dispersed ? channelGradients : nullptr, &axis))
         sweeps.push_back(
             std::make_unique<LightSweepCpu>(setup, slotGrids, spec, settings, receivers));
     for (const auto& sweep : sweeps) out.sweep.memory.bufferBytes += sweep->bufferBytes();
@@ -120,31 +125,53 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
         direction(kWindowSlices * planeTexels);
     out.windowBytes = windowBytes(p, axis);
 
+    // One kernel a ray per pixel: under dispersion red, green and blue, each bending with its
+    // own n (channelViewParams, the view pass's three), else the scene's.
+    const int channels = dispersed ? 3 : 1;
+    std::vector<shared::GpuViewParams> channelParams;
+    for (int c = 0; c < channels; ++c)
+        channelParams.push_back(dispersed ? channelViewParams(setup, c) : p);
     std::atomic<int64_t> behind{0};
-    shared::ViewKernelCpu kernel{{p}};
-    for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
-    if (!gradient.empty()) kernel.gradient = gradient.data();
-    kernel.fluence = fluence.data();
-    kernel.fluenceDirection = direction.data();
-    if (shared::environmentType(p) == EK_ENVIRONMENT_IMAGE)
-        kernel.environment = environment->pixels.data();
-    kernel.window.axis = axis.axis;
-    kernel.window.u = u;
-    kernel.window.w = w;
-    kernel.window.order = axis.order;
-    kernel.window.slices = kWindowSlices;
-    kernel.window.planeTexels = planeTexels;
-    kernel.window.behind = &behind;
+    std::vector<shared::ViewKernelCpu> kernels;
+    kernels.reserve(size_t(channels));
+    for (int c = 0; c < channels; ++c) {
+        shared::ViewKernelCpu kernel{{channelParams[size_t(c)]}};
+        for (size_t s = 0; s < slotGrids.size(); ++s)
+            kernel.fields[s] = slotGrids[s]->values.data();
+        const RefractionVolumeCpu& channelGradient = !dispersed || c == 1 ? gradient
+                                                     : c == 0             ? channelGradients->red
+                                                                          : channelGradients->blue;
+        if (!channelGradient.empty()) kernel.gradient = channelGradient.data();
+        kernel.fluence = fluence.data();
+        kernel.fluenceDirection = direction.data();
+        if (shared::environmentType(p) == EK_ENVIRONMENT_IMAGE)
+            kernel.environment = environment->pixels.data();
+        kernel.window.axis = axis.axis;
+        kernel.window.u = u;
+        kernel.window.w = w;
+        kernel.window.order = axis.order;
+        kernel.window.slices = kWindowSlices;
+        kernel.window.planeTexels = planeTexels;
+        kernel.window.behind = &behind;
+        kernels.push_back(kernel);
+    }
+    // The kernels with the window of a turn.
+    const auto kernelsWith = [&](const shared::ViewKernelCpu::FluenceWindow& window) {
+        std::vector<shared::ViewKernelCpu> turn(kernels);
+        for (shared::ViewKernelCpu& k : turn) k.window = window;
+        return turn;
+    };
 
-    // Every pixel's ray, started where it enters the volume (view_march.h, integrateViewRay).
+    // Every ray, started where it enters the volume (view_march.h, integrateViewRay); ray
+    // i·channels + c is pixel i's in channel c.
     std::optional<StageScope> starting(std::in_place, timer, "view");
     const int width = p.image.x, height = p.image.y;
-    const bool curved = shared::curvedRays(p);
     const size_t pixels = size_t(width) * size_t(height);
-    std::vector<PixelRay> rays(pixels);
-    std::vector<CurvedRayCpu> curvedRays(curved ? pixels : 0);
-    std::vector<StraightRayCpu> straightRays(curved ? 0 : pixels);
-    out.rayBytes = pixels * rayBytes(curved);
+    const size_t count = pixels * size_t(channels);
+    std::vector<PixelRay> rays(count);
+    std::vector<CurvedRayCpu> curvedRays(curved ? count : 0);
+    std::vector<StraightRayCpu> straightRays(curved ? 0 : count);
+    out.rayBytes = count * rayBytes(p);
     const auto forEachPixel = [&](const auto& perPixel) {
         tbb::parallel_for(tbb::blocked_range<int>(0, height),
                           [&](const tbb::blocked_range<int>& r) {
@@ -153,34 +180,79 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
                                       perPixel(x, y, size_t(y) * size_t(width) + size_t(x));
                           });
     };
-    forEachPixel([&](int x, int y, size_t i) {
-        PixelRay& ray = rays[i];
-        const glm::vec3 origin(p.cameraOrigin);
-        const glm::vec3 dir = kernel.pixelRayDirection(x, y);
-        const glm::vec2 span = kernel.intersectVolume(origin, dir);
-        ray.inVolume = span.x < span.y;
-        ray.ended = !ray.inVolume;
-        if (!ray.inVolume) return;
-        if (curved)
-            curvedRays[i] = kernel.curvedRayStart(origin + dir * span.x, dir, true, 0.0f, 0,
-                                                  glm::vec3(0.0f), glm::vec3(1.0f));
-        else
-            straightRays[i] = kernel.straightRayStart(origin, dir, span);
+    forEachPixel([&](int x, int y, size_t pixel) {
+        for (int c = 0; c < channels; ++c) {
+            shared::ViewKernelCpu& kernel = kernels[size_t(c)];
+            const size_t i = pixel * size_t(channels) + size_t(c);
+            PixelRay& ray = rays[i];
+            const glm::vec3 origin(kernel.params.cameraOrigin);
+            const glm::vec3 dir = kernel.pixelRayDirection(x, y);
+            const glm::vec2 span = kernel.intersectVolume(origin, dir);
+            ray.inVolume = span.x < span.y;
+            ray.ended = !ray.inVolume;
+            if (!ray.inVolume) continue;
+            if (curved)
+                curvedRays[i] = kernel.curvedRayStart(origin + dir * span.x, dir, true, 0.0f, 0,
+                                                      glm::vec3(0.0f), glm::vec3(1.0f));
+            else
+                straightRays[i] = kernel.straightRayStart(origin, dir, span);
+        }
     });
     starting.reset();
+    // The receiver hits waiting for their irradiance, one a ray (none without receivers).
+    std::vector<ReceiverHit> hits(shared::receiverCount(p) > 0 ? count : 0);
     std::atomic<int64_t> steps{0};
-    const auto advanceRays = [&](shared::ViewKernelCpu& k) {
-        forEachPixel([&](int, int, size_t i) {
-            PixelRay& ray = rays[i];
-            if (ray.ended) return;
-            // Reflections at sharp surfaces see the environment: none is kept.
-            shared::ViewKernelCpu::KeptReflection none, unused;
-            const int before = curved ? curvedRays[i].steps : straightRays[i].step;
-            const int state = curved ? k.curvedRayAdvance(curvedRays[i], none, unused)
-                                     : k.straightRayAdvance(straightRays[i]);
-            ray.ended = state == EK_RAY_ENDED;
-            const int64_t taken = (curved ? curvedRays[i].steps : straightRays[i].step) - before;
-            steps.fetch_add(taken, std::memory_order_relaxed);
+    const auto advanceRays = [&](const std::vector<shared::ViewKernelCpu>& turn) {
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& r) {
+                // This block's: they point at each ray's receiver hit.
+                std::vector<shared::ViewKernelCpu> block(turn);
+                int64_t taken = 0;
+                for (int y = r.begin(); y != r.end(); ++y)
+                    for (int x = 0; x < width; ++x)
+                        for (int c = 0; c < channels; ++c) {
+                            const size_t i =
+                                (size_t(y) * size_t(width) + size_t(x)) * size_t(channels) +
+                                size_t(c);
+                            PixelRay& ray = rays[i];
+                            if (ray.ended) continue;
+                            shared::ViewKernelCpu& k = block[size_t(c)];
+                            if (!hits.empty()) k.deferredReceiverHit = &hits[i];
+                            // Reflections at sharp surfaces see the environment: none is kept.
+                            shared::ViewKernelCpu::KeptReflection none, unused;
+                            const int before = curved ? curvedRays[i].steps : straightRays[i].step;
+                            const int state = curved
+                                                  ? k.curvedRayAdvance(curvedRays[i], none, unused)
+                                                  : k.straightRayAdvance(straightRays[i]);
+                            ray.ended = state == EK_RAY_ENDED;
+                            taken += (curved ? curvedRays[i].steps : straightRays[i].step) - before;
+                        }
+                steps.fetch_add(taken, std::memory_order_relaxed);
+            });
+    };
+    // Shades the receiver hits whose irradiance is complete: a voxel receiver's once the fluence
+    // slices it reads (1.5 voxels in front of it, receiverFluenceIrradiance) are held; with
+    // `all`, every hit, the plane receivers' maps being complete. The ray's radiance gets what
+    // the view pass would have added where the ray met the receiver: the same bits.
+    const auto shadeReceiverHits = [&](std::vector<shared::ViewKernelCpu>& turn, bool all) {
+        if (hits.empty()) return;
+        forEachPixel([&](int, int, size_t pixel) {
+            for (int c = 0; c < channels; ++c) {
+                const size_t i = pixel * size_t(channels) + size_t(c);
+                ReceiverHit& hit = hits[i];
+                if (hit.receiver < 0) continue;
+                shared::ViewKernelCpu& k = turn[size_t(c)];
+                if (!all) {
+                    if (shared::receiverKind(p.receivers[hit.receiver]) != EK_RECEIVER_VOXELS)
+                        continue;
+                    const glm::vec3 read =
+                        k.worldToVolumeIndex(hit.x) + 1.5f * k.receiverNormal(hit.receiver);
+                    if (!k.viewSampleReady(read)) continue;
+                }
+                glm::vec3& radiance = curved ? curvedRays[i].radiance : straightRays[i].radiance;
+                radiance += hit.weight * k.receiverRadiance(hit.receiver, hit.x, hit.front);
+                hit.receiver = -1;
+            }
         });
     };
 
@@ -190,6 +262,7 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
     // the slices held complete: a sample not ready at one such turn needs a slice swept after it,
     // so at the next its slices are among the kWindowSlices held.
     const int planes = sweeps.empty() ? 0 : sweeps.front()->plan().planes;
+    shared::ViewKernelCpu::FluenceWindow window = kernels.front().window;
     const int depth = res[axis.axis];
     int swept = 0;
     for (int j = 0; j < planes; ++j) {
@@ -212,42 +285,58 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
         // The slices held, by their place in the sweep: swept − kWindowSlices … swept − 1.
         const int oldest = std::max(swept - kWindowSlices, 0), newest = swept - 1;
         const auto sliceAt = [&](int rank) { return axis.order > 0 ? rank : depth - 1 - rank; };
-        shared::ViewKernelCpu k = kernel;
-        k.window.first = std::min(sliceAt(oldest), sliceAt(newest));
-        k.window.last = std::max(sliceAt(oldest), sliceAt(newest));
-        k.window.swept = swept;
-        advanceRays(k);
+        window.first = std::min(sliceAt(oldest), sliceAt(newest));
+        window.last = std::max(sliceAt(oldest), sliceAt(newest));
+        window.swept = swept;
+        std::vector<shared::ViewKernelCpu> turn = kernelsWith(window);
+        advanceRays(turn);
+        shadeReceiverHits(turn, false);
     }
     StageScope stage(timer, "view");
     // With no light to sweep the rays read no fluence: they finish in one go.
-    if (planes == 0) {
-        shared::ViewKernelCpu k = kernel;
-        k.window.axis = -1;
-        advanceRays(k);
-    }
+    if (planes == 0) window.axis = -1;
+    std::vector<shared::ViewKernelCpu> last = kernelsWith(window);
+    if (planes == 0) advanceRays(last);
+    // The receivers' maps are complete: the hits left see them.
+    out.sweep.receiverMap = receivers.map(setup);
+    for (shared::ViewKernelCpu& k : last) k.receiverMap = out.sweep.receiverMap.data();
+    shadeReceiverHits(last, true);
     for (const auto& sweep : sweeps) countSweep(*sweep, out.sweep);
     out.samplesBehind = behind.load();
     out.viewSteps = steps.load();
 
     // What each ray sees where it leaves (integrateViewRay's last line), alpha the mean
-    // transmittance (renderPixel's).
+    // transmittance (renderPixel's); under dispersion each channel's ray gives its channel, in
+    // renderPixelChannel's order of operations.
     out.image = Image(width, height);
-    forEachPixel([&](int x, int y, size_t i) {
-        glm::vec3 radiance, transmittance;
-        if (!rays[i].inVolume) {
-            radiance = kernel.environmentRadiance(kernel.pixelRayDirection(x, y));
-            transmittance = glm::vec3(1.0f);
-        } else if (curved) {
-            transmittance = curvedRays[i].transmittance;
-            radiance = curvedRays[i].radiance +
-                       transmittance * kernel.environmentRadiance(curvedRays[i].exitDir);
-        } else {
-            transmittance = straightRays[i].transmittance;
-            radiance = straightRays[i].radiance +
-                       transmittance * kernel.environmentRadiance(straightRays[i].dir);
+    forEachPixel([&](int x, int y, size_t pixel) {
+        glm::vec4 colour(0.0f);
+        for (int c = 0; c < channels; ++c) {
+            shared::ViewKernelCpu& kernel = kernels[size_t(c)];
+            const size_t i = pixel * size_t(channels) + size_t(c);
+            glm::vec3 radiance, transmittance;
+            if (!rays[i].inVolume) {
+                radiance = kernel.environmentRadiance(kernel.pixelRayDirection(x, y));
+                transmittance = glm::vec3(1.0f);
+            } else if (curved) {
+                transmittance = curvedRays[i].transmittance;
+                radiance = curvedRays[i].radiance +
+                           transmittance * kernel.environmentRadiance(curvedRays[i].exitDir);
+            } else {
+                transmittance = straightRays[i].transmittance;
+                radiance = straightRays[i].radiance +
+                           transmittance * kernel.environmentRadiance(straightRays[i].dir);
+            }
+            if (!dispersed) {
+                colour = glm::vec4(radiance,
+                                   (transmittance.x + transmittance.y + transmittance.z) / 3.0f);
+                continue;
+            }
+            colour[c] = radiance[c];
+            colour.w = c == 0 ? transmittance[c] : colour.w + transmittance[c];
+            if (c == 2) colour.w = colour.w / 3.0f;
         }
-        out.image.at(x, y) =
-            glm::vec4(radiance, (transmittance.x + transmittance.y + transmittance.z) / 3.0f);
+        out.image.at(x, y) = colour;
     });
     return out;
 }
