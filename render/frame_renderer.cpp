@@ -305,6 +305,14 @@ Image FrameRenderer::render(int frame) {
         ++transportRuns_[used->name()];
         return image;
     }
+    if (interleaved) {  // GPU: as on the CPU twin above
+        Image image = used->runWithViewGpu(
+            {setup, *textures_, *refractionGpu_, timer_.get(), disperses}, environment_->texture());
+        lastTransportStats_ = used->stats();
+        transportSteps_ += lastTransportStats_.steps;
+        ++transportRuns_[used->name()];
+        return image;
+    }
     if (backend_ == Backend::Cpu) {
         timer_->begin("view");
         // Empty stand-ins by reference: `cond ? member : {}` would copy the member every frame.

@@ -23,6 +23,10 @@ Image LightTransport::runWithViewCpu(const TransportInputsCpu&, const Image*) {
     throw Error("light transport \"" + name() + "\"", "renders no view of its own");
 }
 
+Image LightTransport::runWithViewGpu(const TransportInputsGpu&, unsigned) {
+    throw Error("light transport \"" + name() + "\"", "renders no view of its own");
+}
+
 TransportOutputCpu fluenceOutputOf(const std::vector<glm::vec4>& fluence,
                                    const std::vector<glm::vec4>& direction,
                                    const std::vector<glm::vec4>& receiverMap) {

@@ -174,11 +174,14 @@ public:
     virtual std::string previewPatch() const { return {}; }
     // Whether, for the setup configure() wrote last, the method renders the frame's image itself
     // in one pass with its light (the plane sweep's interleaved view): the frame renderer then
-    // calls runWithViewCpu every frame instead of runCpu and the view pass.
+    // calls runWithViewCpu (runWithViewGpu) every frame instead of runCpu (runGpu) and the view
+    // pass.
     virtual bool viewsInterleaved() const { return false; }
     // Lights and views in one pass; stats() as after runCpu. Only where viewsInterleaved().
     // `environment`: as renderViewCpu's.
     virtual Image runWithViewCpu(const TransportInputsCpu& in, const Image* environment);
+    // The same on the GPU; `environmentTexture` as ViewPassGpu::render's.
+    virtual Image runWithViewGpu(const TransportInputsGpu& in, unsigned environmentTexture);
 };
 
 // The fluence rate (rgb, power per area) at every voxel centre, x fastest, that the output

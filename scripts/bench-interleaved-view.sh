@@ -2,7 +2,7 @@
 # Times the plane sweep's interleaved view against its volume path on the scenes it gained:
 # a receiver (data/scenes/glass_sphere_floor.json seen from above, its spot light on the camera's
 # side) and dispersion (data/scenes/glass_sphere_fog.json, a directional light from the camera's
-# side, its glass given Abbe number 20), with the undispersed fog scene as the baseline. CPU twin.
+# side, its glass given Abbe number 20), with the undispersed fog scene as the baseline.
 # Prints one markdown row per run: scene, view, the sweep's and the view's ms (`--stats`; for the
 # interleaved view the sweep's share of the frame and the rays'), the samples read behind the
 # sweep, the wall time of the whole render and its peak RSS.
@@ -10,11 +10,16 @@
 #   The runs are interleaved row by row so that a changing load hits every row alike.
 #   EIKON=path/to/eikon picks the binary; BASELINE=path/to/other/eikon adds its interleaved rows
 #   of the scenes it can render (labelled "baseline"), to compare two builds in one run.
+#   BACKEND=gpu times the GPU path (llvmpipe here: the software driver's cost, not a GPU's),
+#   without the dispersed scene, which the interleaved view disperses on the CPU twin only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RUNS=${1:-3}
 EIKON=${EIKON:-build/apps/eikon}
 BASELINE=${BASELINE:-}
+BACKEND=${BACKEND:-cpu}
+SCENES="fog fog_abbe20 floor_from_above"
+[ "$BACKEND" = gpu ] && SCENES="fog floor_from_above"
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
 
@@ -43,15 +48,17 @@ PY
 
 row() {  # binary label scene view
     local log="$OUT/log"
-    /usr/bin/time -f "rss %M wall %e" "$1" render "$OUT/$3_$4.json" --backend cpu --stats --quiet \
+    /usr/bin/time -f "rss %M wall %e" "$1" render "$OUT/$3_$4.json" --backend "$BACKEND" --stats --quiet \
         -o "$OUT/out.png" > "$log" 2>&1
     /usr/bin/python3 - "$log" "$2" "$3" "$4" <<'PY'
 import re, sys
 log, label, scene, view = sys.argv[1:5]
 text = open(log).read()
-def stage(name):
-    m = re.search(rf"^\s+{name}\s+([0-9.]+)", text, re.M)
-    return m.group(1) if m else "-"
+def stage(name):  # the GPU's time where it has one (timer queries), else the CPU's
+    m = re.search(rf"^\s+{name}\s+([0-9.]+)\s+(\S+)", text, re.M)
+    if not m:
+        return "-"
+    return m.group(2) if m.group(2) != "-" else m.group(1)
 behind = re.search(r"([0-9]+) samples behind the sweep", text)
 wall = re.search(r"wall ([0-9.]+)", text).group(1)
 rss = int(re.search(r"rss ([0-9]+)", text).group(1)) // 1024
@@ -63,7 +70,7 @@ PY
 echo "| scene | view | binary | sweep ms | view ms | samples behind | render s | peak RSS MB |"
 echo "|---|---|---|---:|---:|---:|---:|---:|"
 for _ in $(seq "$RUNS"); do
-    for scene in fog fog_abbe20 floor_from_above; do
+    for scene in $SCENES; do
         for view in volume interleaved; do
             row "$EIKON" this "$scene" "$view"
         done

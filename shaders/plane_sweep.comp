@@ -47,6 +47,10 @@ uniform ivec4 sweepPlane;
 uniform vec4 sweepPlace;
 uniform vec4 sweepLimit;
 uniform int depositSlice;  // EK_SWEEP_PASS_DEPOSIT: the volume slice along the sweep axis
+// The interleaved view (plane_sweep_view_gpu.cpp): the fluence images are its window of slices,
+// texel (u, w) of the plane at layer depositSlice (the slice modulo the slices held), which
+// EK_SWEEP_PASS_CLEAR zeroes alone.
+uniform int depositWindow;
 // The CPU twin's scale of the receivers' sums (planeSweepReceiverScale), in double so that
 // value · scale rounds the same way.
 uniform double receiverScale;
@@ -80,8 +84,11 @@ void depositSweepReceiver(int mapTexel, vec3 power) {
 void main() {
     const ivec2 t = ivec2(gl_GlobalInvocationID.xy);
     if (sweepPass == EK_SWEEP_PASS_CLEAR) {
-        const ivec3 v = ivec3(t, int(gl_GlobalInvocationID.z));
-        if (any(greaterThanEqual(v, volumeResolution()))) return;
+        const ivec3 v = depositWindow != 0 ? ivec3(t, depositSlice)
+                                           : ivec3(t, int(gl_GlobalInvocationID.z));
+        if (any(greaterThanEqual(v, depositWindow != 0 ? imageSize(fluenceOut)
+                                                       : volumeResolution())))
+            return;
         imageStore(fluenceOut, v, vec4(0.0f));
         imageStore(fluenceDirectionOut, v, vec4(0.0f));
         return;
@@ -110,6 +117,7 @@ void main() {
         v[s.axes.x] = depositSlice;
         v[s.axes.y] = t.x;
         v[s.axes.z] = t.y;
+        if (depositWindow != 0) v = ivec3(t, depositSlice);
         imageStore(fluenceOut, v, imageLoad(fluenceOut, v) + vec4(fluence, 0.0f));
         imageStore(fluenceDirectionOut, v, imageLoad(fluenceDirectionOut, v) + vec4(weighted, 0.0f));
     }

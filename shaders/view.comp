@@ -12,7 +12,7 @@ layout(std430, binding = EK_SSBO_RECEIVER_MAP) readonly buffer ReceiverMapBlock 
 vec4 fetchReceiverTexel(int index) { return receiverTexels[index]; }
 
 // Every sample is ready: the volumes are whole (the plane sweep's interleaved view, whose are not,
-// runs on the CPU twin: render/transport/plane_sweep/plane_sweep_view.h).
+// is view_interleaved.comp).
 bool viewSampleReady(vec3 p) { return true; }
 // Receivers are shaded where the rays meet them: their maps are complete.
 bool receiverDeferred(int r, vec3 x, bool front, vec3 weight) { return false; }

@@ -40,11 +40,35 @@ vec4 fetchLightVoxel(int light, ivec3 voxel) {
     return texelFetch(lightTex, stackedVoxel(light, voxel), 0);
 }
 vec4 fetchGradientVoxel(ivec3 voxel) { return texelFetch(gradientTex, voxel, 0); }
+#ifndef EK_FLUENCE_WINDOW
 vec4 fetchFluenceVoxel(ivec3 voxel) { return texelFetch(fluenceTex, voxel, 0); }
 vec4 fetchFluenceDirectionVoxel(ivec3 voxel) { return texelFetch(fluenceDirectionTex, voxel, 0); }
+#else
+// The plane sweep's interleaved view (view_interleaved.comp): the fluence units hold only the
+// last fluenceWindow.y slices swept across axis fluenceWindow.x, slice k at layer k % slices of
+// a volume of res[u] × res[w] × slices (u, w the next two axes); a lookup elsewhere along the
+// axis takes the nearest slice held, fluenceWindow.z … .w (the CPU twin's FluenceWindow,
+// render/volume_kernels_cpu.h).
+uniform ivec4 fluenceWindow;  // axis, slices, first, last
+ivec3 fluenceWindowTexel(ivec3 voxel) {
+    const int axis = fluenceWindow.x;
+    const int k = clamp(voxel[axis], fluenceWindow.z, fluenceWindow.w);
+    return ivec3(voxel[(axis + 1) % 3], voxel[(axis + 2) % 3], k % fluenceWindow.y);
+}
+vec4 fetchFluenceVoxel(ivec3 voxel) {
+    return texelFetch(fluenceTex, fluenceWindowTexel(voxel), 0);
+}
+vec4 fetchFluenceDirectionVoxel(ivec3 voxel) {
+    return texelFetch(fluenceDirectionTex, fluenceWindowTexel(voxel), 0);
+}
+#endif
 
 // Exact texels: the shared code filters, so the GPU matches the CPU twin.
 vec4 fetchEnvironment(ivec2 texel) { return texelFetch(environmentTex, texel, 0); }
+
+#if defined(EK_HARDWARE_TRILINEAR) && defined(EK_FLUENCE_WINDOW)
+#error "the fluence window's slices wrap around: the texture unit cannot filter across them"
+#endif
 
 #ifdef EK_HARDWARE_TRILINEAR
 // Trilinear filtering by the texture unit, one lookup instead of eight texelFetch: 2-3x faster on

@@ -63,6 +63,12 @@
 // compute shader only 8 storage blocks).
 #define EK_SSBO_SWEEP_COUNTERS 4       // texels whose light was lost
 #define EK_SSBO_SWEEP_RECEIVER_SUMS 5  // power per receiver map texel
+// view_interleaved.comp (the plane sweep's interleaved view), whose dispatches alternate with
+// plane_sweep.comp's: numbers apart from the sweep's; EK_SSBO_RECEIVER_MAP as view.comp.
+#define EK_SSBO_INTERLEAVED_RAYS 1      // every pixel's view ray state (CurvedRay or StraightRay)
+#define EK_SSBO_INTERLEAVED_FLAGS 2     // per pixel: in the volume, ended
+#define EK_SSBO_INTERLEAVED_HITS 3      // per pixel: the receiver hit waiting to be shaded
+#define EK_SSBO_INTERLEAVED_COUNTERS 6  // view ray steps, samples behind the sweep
 // The voxelizer's passes (voxelize_*.comp) run apart from the volume passes: binding 0 is theirs
 // until render/params_buffer.cpp binds the parameters again before the next volume pass.
 #define EK_SSBO_VOXELIZE_POSITIONS 0  // voxelize_toggle.comp: vertex positions

@@ -11,8 +11,8 @@
 // `bool viewSampleReady(vec3 p)`: whether a step's sample may be shaded now; and
 // `bool receiverDeferred(int r, vec3 x, bool front, vec3 weight)`: whether the includer takes a
 // receiver hit to shade later (weight × receiverRadiance, added to the ray's radiance), when its
-// irradiance is not complete yet. Both are true and false on the GPU; the plane sweep's
-// interleaved view (CPU twin) defers.
+// irradiance is not complete yet. Both are true and false in the view pass (view.comp and its
+// twin); the plane sweep's interleaved view (view_interleaved.comp and its twin) waits and defers.
 
 // Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0.
 float stepWeight(float kappa, float s) {

@@ -52,6 +52,10 @@ std::vector<Variant> variants() {
         list.push_back({file, none});
         list.push_back({file, {"EK_HARDWARE_TRILINEAR"}});
     }
+    // The plane sweep's interleaved view: curved or straight rays (always the window's exact
+    // filtering).
+    list.push_back({"view_interleaved.comp", {"EK_FLUENCE_WINDOW"}});
+    list.push_back({"view_interleaved.comp", {"EK_FLUENCE_WINDOW", "EK_INTERLEAVED_CURVED"}});
     // The plane sweep: exact math.
     list.push_back({"plane_sweep.comp", none});
     list.push_back({"plane_sweep.comp", {"EK_EXACT_MATH"}});

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <functional>
 #include <string>
 
 #include "core/error.h"
@@ -96,37 +97,54 @@ void PlaneSweepGpu::dispatchPlane(glm::ivec2 size) const {
     barrier();
 }
 
+void PlaneSweepGpu::sweepPlane(const ViewSetup& setup, const PlaneSweepPlan& plan,
+                               const PlaneSweepSettings& settings, int j, const unsigned planes[5],
+                               int& in, bool receivers) {
+    const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
+    program_->setIVec4("sweepAxes", sweep.axes);
+    program_->setIVec4("sweepPlane", sweep.plane);
+    program_->setVec4("sweepPlace", sweep.place);
+    program_->setVec4("sweepLimit", sweep.limit);
+    bindImage(EK_IMAGE_SWEEP_TRACE, planes[4], false);
+    bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes[in], false);
+    bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes[2 + in], false);
+    bindImage(EK_IMAGE_SWEEP_LIGHT_OUT, planes[1 - in], false);
+    bindImage(EK_IMAGE_SWEEP_DIRECTION_OUT, planes[3 - in], false);
+    program_->setInt("sweepPass", kPassTrace);
+    dispatchPlane(plan.size);
+    program_->setInt("sweepPass", kPassAdvance);
+    dispatchPlane(plan.size);
+    if (receivers) {
+        program_->setInt("sweepPass", kPassStop);
+        dispatchPlane(plan.size);
+    }
+    in = 1 - in;
+    texelSteps_ += int64_t(plan.size.x) * int64_t(plan.size.y);
+}
+
+void PlaneSweepGpu::depositPlane(const ViewSetup& setup, const PlaneSweepPlan& plan,
+                                 const PlaneSweepSettings& settings, int j,
+                                 const unsigned planes[5], int in) {
+    const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
+    program_->setIVec4("sweepAxes", sweep.axes);
+    program_->setIVec4("sweepPlane", sweep.plane);
+    program_->setVec4("sweepPlace", sweep.place);
+    program_->setVec4("sweepLimit", sweep.limit);
+    bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes[in], false);
+    bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes[2 + in], false);
+    program_->setInt("sweepPass", kPassDeposit);
+    dispatchPlane(plan.size);
+}
+
 void PlaneSweepGpu::sweepPass(const ViewSetup& setup, const PlaneSweepPlan& plan,
-                              const PlaneSweepSettings& settings, size_t texels, bool receivers) {
-    bindImage(EK_IMAGE_SWEEP_TRACE, planes_[4], false);
-    int in = 0;  // planes_[in] and planes_[2 + in] hold the previous plane
+                              const PlaneSweepSettings& settings, bool receivers) {
+    int in = 0;
     for (int j = 0; j < plan.planes; ++j) {
-        const shared::GpuPlaneSweep sweep = planeSweepStep(setup, plan, settings, j);
-        program_->setIVec4("sweepAxes", sweep.axes);
-        program_->setIVec4("sweepPlane", sweep.plane);
-        program_->setVec4("sweepPlace", sweep.place);
-        program_->setVec4("sweepLimit", sweep.limit);
-        bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes_[in], false);
-        bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes_[2 + in], false);
-        bindImage(EK_IMAGE_SWEEP_LIGHT_OUT, planes_[1 - in], false);
-        bindImage(EK_IMAGE_SWEEP_DIRECTION_OUT, planes_[3 - in], false);
-        program_->setInt("sweepPass", kPassTrace);
-        dispatchPlane(plan.size);
-        program_->setInt("sweepPass", kPassAdvance);
-        dispatchPlane(plan.size);
-        if (receivers) {
-            program_->setInt("sweepPass", kPassStop);
-            dispatchPlane(plan.size);
-        }
-        in = 1 - in;
-        texelSteps_ += int64_t(texels);
+        sweepPlane(setup, plan, settings, j, planes_, in, receivers);
         const int slice = planeSweepSlice(plan, j);
         if (slice < 0) continue;
-        bindImage(EK_IMAGE_SWEEP_LIGHT_IN, planes_[in], false);
-        bindImage(EK_IMAGE_SWEEP_DIRECTION_IN, planes_[2 + in], false);
-        program_->setInt("sweepPass", kPassDeposit);
         program_->setInt("depositSlice", slice);
-        dispatchPlane(plan.size);
+        depositPlane(setup, plan, settings, j, planes_, in);
     }
 }
 
@@ -146,36 +164,13 @@ void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
 
     if (timer) timer->begin("plane_sweep");
     fields.bind();
-    // The volumes written here may not stay bound for sampling.
-    for (GLuint unit : {EK_UNIT_FLUENCE, EK_UNIT_FLUENCE_DIRECTION}) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_3D, 0);
-    }
-    glActiveTexture(GL_TEXTURE0);
-    bindImage(EK_IMAGE_SWEEP_FLUENCE, volumes_[0], true);
-    bindImage(EK_IMAGE_SWEEP_FLUENCE_DIRECTION, volumes_[1], true);
-    const GLuint zero = 0;
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, counters_);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), &zero, GL_DYNAMIC_READ);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_SWEEP_COUNTERS, counters_);
-    const bool receivers = shared::receiverCount(p) > 0;
-    receiverSumCount_ = 3 * receiverMapTexels(p);
-    receiverScale_ = planeSweepReceiverScale(setup, settings);
-    // Two words per int64 sum, zeroed (at least one word: GL refuses empty buffers).
-    const std::vector<GLuint> zeros(std::max<size_t>(2 * receiverSumCount_, 1), 0u);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, receiverSums_);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(zeros.size() * sizeof(GLuint)), zeros.data(),
-                 GL_DYNAMIC_READ);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_SWEEP_RECEIVER_SUMS, receiverSums_);
-
-    program_->use();
-    glUniform1d(program_->uniformLocation("receiverScale"), receiverScale_);
+    beginRun(setup, settings, volumes_);
+    program_->setInt("depositWindow", 0);
     program_->setInt("sweepPass", kPassClear);
     glDispatchCompute(groups(res.x), groups(res.y), GLuint(res.z));
     barrier();
 
+    const bool receivers = shared::receiverCount(p) > 0;
     for (int l = 0; l < shared::lightCount(p); ++l) {
         if (!shared::lightInFluence(p, l)) continue;
         const PlaneSweepPlan plan = planPlaneSweep(setup, l, settings);
@@ -188,12 +183,141 @@ void PlaneSweepGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
             glBindTexture(GL_TEXTURE_3D, gradients[size_t(pass)]);
             glActiveTexture(GL_TEXTURE0);
             program_->setVec3("sweepChannels", channelPassMask(pass, passes));
-            sweepPass(setup, plan, settings, texels, receivers);
+            sweepPass(setup, plan, settings, receivers);
         }
     }
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
     if (timer) timer->end();
+    finishRun(setup);
+}
+
+void PlaneSweepGpu::sweepWindowed(const ViewSetup& setup, VolumeTextures& fields,
+                                  const RefractionVolumesGpu& refraction,
+                                  const PlaneSweepSettings& settings, const SweepAxis& axis,
+                                  const unsigned window[2], int windowSlices, bool dispersion,
+                                  GpuStageTimer* timer,
+                                  const std::function<bool(int swept)>& isTurn,
+                                  const std::function<void(int swept)>& turn) {
+    const shared::GpuViewParams& p = setup.params;
+    const std::vector<unsigned> gradients = channelPassGradientsGpu(refraction, dispersion, kWhere);
+    const int passes = int(gradients.size());
+    texels_ = 0;
+    texelSteps_ = 0;
+    memory_ = PlaneSweepMemory{};
+    // Every light's sweep, each channel's under dispersion, in the order the twin's
+    // lightSweepSpecs lists them (its deposits add in that order), each with its own buffers.
+    struct Sweep {
+        PlaneSweepPlan plan;
+        unsigned gradient;
+        glm::vec3 channels;
+        GLuint planes[5];  // light, direction (twice each), traces
+        int in = 0;        // planes[in] and planes[2 + in] hold the previous plane
+    };
+    std::vector<Sweep> sweeps;
+    struct PlaneTextures {
+        std::vector<GLuint> names;
+        ~PlaneTextures() { glDeleteTextures(GLsizei(names.size()), names.data()); }
+    } owned;
+    for (int l = 0; l < shared::lightCount(p); ++l) {
+        if (!shared::lightInFluence(p, l)) continue;
+        const PlaneSweepPlan plan = planPlaneSweep(setup, l, settings, &axis);
+        for (int pass = 0; pass < passes; ++pass) {
+            Sweep sweep{plan, gradients[size_t(pass)], channelPassMask(pass, passes), {}, 0};
+            glGenTextures(5, sweep.planes);
+            owned.names.insert(owned.names.end(), sweep.planes, sweep.planes + 5);
+            for (GLuint texture : sweep.planes) {
+                glBindTexture(GL_TEXTURE_2D, texture);
+                glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, plan.size.x, plan.size.y);
+            }
+            glBindTexture(GL_TEXTURE_2D, 0);
+            const size_t texels = size_t(plan.size.x) * size_t(plan.size.y);
+            memory_.bufferBytes += 5 * texels * sizeof(glm::vec4);
+            texels_ += int64_t(texels);
+            sweeps.push_back(sweep);
+        }
+    }
+    if (glGetError() != GL_NO_ERROR)
+        throw Error(kWhere, "the driver refused the sweeps' RGBA32F planes");
+
+    if (timer) timer->begin("plane_sweep");
+    fields.bind();
+    beginRun(setup, settings, window);
+    program_->setInt("depositWindow", 1);
+    const glm::ivec3 res(p.resolution);
+    const glm::ivec2 windowSize(res[(axis.axis + 1) % 3], res[(axis.axis + 2) % 3]);
+    program_->setInt("sweepPass", kPassClear);
+    for (int layer = 0; layer < windowSlices; ++layer) {
+        program_->setInt("depositSlice", layer);
+        dispatchPlane(windowSize);
+    }
+    const bool receivers = shared::receiverCount(p) > 0;
+    const int planes = sweeps.empty() ? 0 : sweeps.front().plan.planes;
+    int swept = 0;
+    for (int j = 0; j < planes; ++j) {
+        for (Sweep& sweep : sweeps) {
+            glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
+            glBindTexture(GL_TEXTURE_3D, sweep.gradient);
+            glActiveTexture(GL_TEXTURE0);
+            program_->setVec3("sweepChannels", sweep.channels);
+            sweepPlane(setup, sweep.plan, settings, j, sweep.planes, sweep.in, receivers);
+        }
+        const int slice = planeSweepSlice(sweeps.front().plan, j);
+        if (slice < 0) continue;
+        program_->setInt("depositSlice", slice % windowSlices);
+        program_->setInt("sweepPass", kPassClear);
+        dispatchPlane(windowSize);
+        for (Sweep& sweep : sweeps) {
+            program_->setVec3("sweepChannels", sweep.channels);
+            depositPlane(setup, sweep.plan, settings, j, sweep.planes, sweep.in);
+        }
+        ++swept;
+        if (!isTurn(swept)) continue;
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+        if (timer) timer->end();
+        turn(swept);
+        if (timer) timer->begin("plane_sweep");
+        // The view's dispatches used another program and the same units: take them back.
+        fields.bind();
+        beginRun(setup, settings, window, false);
+        program_->setInt("depositWindow", 1);
+    }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (timer) timer->end();
+    finishRun(setup);
+}
+
+void PlaneSweepGpu::beginRun(const ViewSetup& setup, const PlaneSweepSettings& settings,
+                             const unsigned output[2], bool fresh) {
+    // The volumes written here may not stay bound for sampling.
+    for (GLuint unit : {EK_UNIT_FLUENCE, EK_UNIT_FLUENCE_DIRECTION}) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        glBindTexture(GL_TEXTURE_3D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+    bindImage(EK_IMAGE_SWEEP_FLUENCE, output[0], true);
+    bindImage(EK_IMAGE_SWEEP_FLUENCE_DIRECTION, output[1], true);
+    if (fresh) {
+        const shared::GpuViewParams& p = setup.params;
+        const GLuint zero = 0;
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, counters_);
+        glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(GLuint), &zero, GL_DYNAMIC_READ);
+        receiverSumCount_ = 3 * receiverMapTexels(p);
+        receiverScale_ = planeSweepReceiverScale(setup, settings);
+        // Two words per int64 sum, zeroed (at least one word: GL refuses empty buffers).
+        const std::vector<GLuint> zeros(std::max<size_t>(2 * receiverSumCount_, 1), 0u);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, receiverSums_);
+        glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(zeros.size() * sizeof(GLuint)),
+                     zeros.data(), GL_DYNAMIC_READ);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_SWEEP_COUNTERS, counters_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_SWEEP_RECEIVER_SUMS, receiverSums_);
+    program_->use();
+    glUniform1d(program_->uniformLocation("receiverScale"), receiverScale_);
+}
+
+void PlaneSweepGpu::finishRun(const ViewSetup& setup) {
     // The map is read back and converted by the twin's own code (a few hundred KB once per run),
     // then uploaded for the view pass.
     receiverMap_ = planeSweepReceiverMap(setup, downloadReceiverSums().data(), receiverScale_);
@@ -221,6 +345,10 @@ void PlaneSweepGpu::bind() const {
     glActiveTexture(GL_TEXTURE0 + EK_UNIT_FLUENCE_DIRECTION);
     glBindTexture(GL_TEXTURE_3D, volumes_[1]);
     glActiveTexture(GL_TEXTURE0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_MAP, receiverMapBuffer_);
+}
+
+void PlaneSweepGpu::bindReceiverMap() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_MAP, receiverMapBuffer_);
 }
 

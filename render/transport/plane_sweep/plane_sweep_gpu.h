@@ -6,6 +6,7 @@
 // Receivers are gathered in fixed point (shaders/fixed_point.glsl) at the twin's scale; their map
 // is read back, converted by the twin's code and uploaded for the view pass.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -31,8 +32,23 @@ public:
     void compute(const ViewSetup& setup, VolumeTextures& fields,
                  const RefractionVolumesGpu& refraction, const PlaneSweepSettings& settings,
                  GpuStageTimer* timer, bool dispersion = false);
+    // The interleaved view's sweeps (plane_sweep_view.h): every light's (each channel's under
+    // dispersion) across the planes of `axis` in lockstep, the twin's order, each with buffers of
+    // its own; each voxel-centre plane is deposited into layer (slice % windowSlices) of
+    // `window` (fluence and direction, RGBA32F volumes of res[u] × res[w] × windowSlices, zeroed
+    // here first). After the swept-th voxel-centre plane, where isTurn(swept), the sweep's stage
+    // closes and turn(swept) runs (the view rays' dispatches); the sweep then binds what it needs
+    // again. The receiver map is complete and bound when it returns.
+    void sweepWindowed(const ViewSetup& setup, VolumeTextures& fields,
+                       const RefractionVolumesGpu& refraction, const PlaneSweepSettings& settings,
+                       const SweepAxis& axis, const unsigned window[2], int windowSlices,
+                       bool dispersion, GpuStageTimer* timer,
+                       const std::function<bool(int swept)>& isTurn,
+                       const std::function<void(int swept)>& turn);
     // The fluence volumes at the output contract's texture units.
     void bind() const;
+    // The receiver map alone, at EK_SSBO_RECEIVER_MAP.
+    void bindReceiverMap() const;
     // The last run's volumes, receiver map and counters, read back (tests, --stats).
     PlaneSweepResultCpu download() const;
 
@@ -45,9 +61,23 @@ private:
     void allocateVolumes(glm::ivec3 res);
     void allocatePlanes(glm::ivec2 size);
     void dispatchPlane(glm::ivec2 size) const;
+    // Binds the output images (fluence and direction) and the counters and uses the program;
+    // `fresh`: a new run, its counters and receiver sums zeroed.
+    void beginRun(const ViewSetup& setup, const PlaneSweepSettings& settings,
+                  const unsigned output[2], bool fresh = true);
+    // Reads the receiver sums back into the map and uploads it for the view.
+    void finishRun(const ViewSetup& setup);
     // One light's sweep, plane by plane, with the gradient and the channels of its pass bound.
     void sweepPass(const ViewSetup& setup, const PlaneSweepPlan& plan,
-                   const PlaneSweepSettings& settings, size_t texels, bool receivers);
+                   const PlaneSweepSettings& settings, bool receivers);
+    // Plane j of a sweep whose buffers are `planes` (light, direction twice each, traces;
+    // planes[in] and planes[2 + in] the previous plane, the new one after it returns).
+    void sweepPlane(const ViewSetup& setup, const PlaneSweepPlan& plan,
+                    const PlaneSweepSettings& settings, int j, const unsigned planes[5], int& in,
+                    bool receivers);
+    // Adds plane j (just swept) to the output images at the depositSlice uniform.
+    void depositPlane(const ViewSetup& setup, const PlaneSweepPlan& plan,
+                      const PlaneSweepSettings& settings, int j, const unsigned planes[5], int in);
     std::vector<int64_t> downloadReceiverSums() const;
 
     std::unique_ptr<ShaderProgram> program_;

@@ -67,10 +67,10 @@ void PlaneSweepTransport::configure(const Scene& scene, ViewSetup& setup) {
     if (!lightAllThroughFluence(scene, setup)) return;
     if (settings_.sweep.interleavedView) {
         const std::string at = where + "/view";
-        if (device_.gpu)
+        if (device_.gpu && shared::curvedRays(setup.params) && dispersesView(setup))
             throw Error(at,
-                        "the interleaved view runs on the CPU twin only (its GPU port is not "
-                        "done): use --backend cpu, or \"view\": \"volume\"");
+                        "the interleaved view does not disperse on the GPU yet (its CPU twin "
+                        "does): use --backend cpu, or \"view\": \"volume\"");
         checkInterleavedView(setup, settings_.sweep, at);
         interleaved_ = true;
         checkMemory(at, double(interleavedViewBytes(setup)),
@@ -118,6 +118,23 @@ Image PlaneSweepTransport::runWithViewCpu(const TransportInputsCpu& in, const Im
     return std::move(frame.image);
 }
 
+Image PlaneSweepTransport::runWithViewGpu(const TransportInputsGpu& in,
+                                          unsigned environmentTexture) {
+    if (!interleavedGpu_) interleavedGpu_ = std::make_unique<InterleavedViewGpu>(device_.exactMath);
+    Image image = interleavedGpu_->render(in.setup, in.fields, in.refraction, settings_.sweep,
+                                          environmentTexture, in.timer);
+    const PlaneSweepGpu& sweep = interleavedGpu_->sweep();
+    interleavedGpuMemory_ = sweep.memory();
+    interleavedGpuMemory_.viewBytes = interleavedGpu_->windowBytes() + interleavedGpu_->rayBytes();
+    stats_ = TransportStats{};
+    stats_.steps = sweep.texelSteps();
+    stats_.particlesTraced = sweep.texels();
+    stats_.particlesCut = sweep.texelsLost();
+    stats_.viewSteps = interleavedGpu_->viewSteps();
+    stats_.viewSamplesBehind = interleavedGpu_->samplesBehind();
+    return image;
+}
+
 void PlaneSweepTransport::runGpu(const TransportInputsGpu& in) {
     if (!gpu_) gpu_ = std::make_unique<PlaneSweepGpu>(device_.exactMath);
     gpu_->compute(in.setup, in.fields, in.refraction, settings_.sweep, in.timer, in.dispersion);
@@ -132,6 +149,7 @@ void PlaneSweepTransport::bindGpu() const {
 }
 
 const PlaneSweepMemory& PlaneSweepTransport::memory() const {
+    if (device_.gpu && interleaved_) return interleavedGpuMemory_;
     return device_.gpu && gpu_ ? gpu_->memory() : result_.memory;
 }
 

@@ -8,7 +8,7 @@
 // By default the swept planes are written into the output contract's fluence volumes, so every
 // view pass and `eikon bench methods` read it like the other methods. With "view": "interleaved"
 // the view rays advance with the planes, as in the thesis, and no volume is kept
-// (plane_sweep_view.h; CPU twin only).
+// (plane_sweep_view.h), on the CPU twin or on the GPU.
 //
 // Settings: render.light_transport.plane_sweep (docs/scene-format.md).
 // Runs on the CPU twin or on the GPU (plane_sweep_gpu.h), with the same results.
@@ -19,6 +19,7 @@
 #include "render/light_transport.h"
 #include "render/transport/plane_sweep/plane_sweep_cpu.h"
 #include "render/transport/plane_sweep/plane_sweep_gpu.h"
+#include "render/transport/plane_sweep/plane_sweep_view.h"
 
 namespace eikon {
 
@@ -44,6 +45,7 @@ public:
     void runCpu(const TransportInputsCpu& in) override;
     bool viewsInterleaved() const override { return interleaved_; }
     Image runWithViewCpu(const TransportInputsCpu& in, const Image* environment) override;
+    Image runWithViewGpu(const TransportInputsGpu& in, unsigned environmentTexture) override;
     void runGpu(const TransportInputsGpu& in) override;
     TransportOutputCpu outputCpu() const override;
     void bindGpu() const override;
@@ -60,6 +62,8 @@ private:
     TransportDevice device_;
     PlaneSweepResultCpu result_;
     std::unique_ptr<PlaneSweepGpu> gpu_;
+    std::unique_ptr<InterleavedViewGpu> interleavedGpu_;
+    PlaneSweepMemory interleavedGpuMemory_;  // the last GPU interleaved frame's
     TransportStats stats_;
     bool interleaved_ = false;  // configure's: interleaved view asked for, light to sweep
 };

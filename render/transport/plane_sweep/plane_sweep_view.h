@@ -19,17 +19,23 @@
 // the receiver's light is complete: a voxel receiver's when the slices in front of it are held,
 // a plane receiver's map after the last plane (it fills as the planes pass it).
 //
-// CPU twin only (its GPU port keeps the ray states in buffers between dispatches; not yet).
+// On the GPU (InterleavedViewGpu: shaders/view_interleaved.comp beside plane_sweep.comp) the ray
+// states stay in buffers between dispatches; the CPU twin is renderInterleavedCpu.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "render/image.h"
 #include "render/transport/plane_sweep/plane_sweep_cpu.h"
+#include "render/transport/plane_sweep/plane_sweep_gpu.h"
 
 namespace eikon {
 
 class GpuStageTimer;
+class RefractionVolumesGpu;
+class ShaderProgram;
+class VolumeTextures;
 
 // The planes the interleaved view sweeps: across the axis the camera looks most along.
 SweepAxis interleavedSweepAxis(const ViewSetup& setup);
@@ -68,5 +74,46 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
                                         const Image* environment,
                                         const ChannelGradientsCpu* channelGradients = nullptr,
                                         GpuStageTimer* timer = nullptr);
+
+// The GPU port (needs a current GL 4.3 context): the same sweeps in lockstep
+// (PlaneSweepGpu::sweepWindowed), the window as two RGBA32F volumes of res[u] × res[w] × 8 slices,
+// and one dispatch of view_interleaved.comp over the pixels at each turn; each pixel's ray state
+// (the shared CurvedRay or StraightRay, laid out by the driver) stays in a buffer between them.
+// Dispersion is not ported (refused); receivers are, as on the twin.
+class InterleavedViewGpu {
+public:
+    // exactMath: the sweep's (PlaneSweepGpu).
+    explicit InterleavedViewGpu(bool exactMath);
+    ~InterleavedViewGpu();
+    InterleavedViewGpu(const InterleavedViewGpu&) = delete;
+    InterleavedViewGpu& operator=(const InterleavedViewGpu&) = delete;
+
+    // The frame, as renderInterleavedCpu's: the fields uploaded and the params bound
+    // (TransportInputsGpu), `refraction` holding ∇n; `environmentTexture` as the view pass's.
+    Image render(const ViewSetup& setup, VolumeTextures& fields,
+                 const RefractionVolumesGpu& refraction, const PlaneSweepSettings& settings,
+                 unsigned environmentTexture, GpuStageTimer* timer = nullptr);
+
+    // The last frame's sweeps (counters, memory, receiver map).
+    const PlaneSweepGpu& sweep() const { return sweep_; }
+    int64_t viewSteps() const { return viewSteps_; }
+    int64_t samplesBehind() const { return samplesBehind_; }
+    size_t windowBytes() const { return windowBytes_; }
+    size_t rayBytes() const { return rayBytes_; }  // rays, flags and receiver hits
+
+private:
+    ShaderProgram& program(bool curved);
+    void allocate(const shared::GpuViewParams& p, const SweepAxis& axis, size_t rayStride);
+
+    PlaneSweepGpu sweep_;
+    std::unique_ptr<ShaderProgram> curved_, straight_;
+    unsigned window_[2] = {0, 0};  // fluence, mean direction
+    glm::ivec3 windowSize_{0};
+    unsigned output_ = 0;
+    int outputWidth_ = 0, outputHeight_ = 0;
+    unsigned rays_ = 0, flags_ = 0, hits_ = 0, counters_ = 0;
+    int64_t viewSteps_ = 0, samplesBehind_ = 0;
+    size_t windowBytes_ = 0, rayBytes_ = 0;
+};
 
 }  // namespace eikon

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "render/light_transport.h"
 #include "render/transport/plane_sweep/plane_sweep_view.h"
+#include "render/transport/plane_sweep/plane_sweep_view_window.h"
 #include "render/view_params.h"
 #include "render/volume_kernels_cpu.h"
 
@@ -41,10 +42,7 @@ size_t rayBytes(const shared::GpuViewParams& p) {
            (shared::receiverCount(p) > 0 ? sizeof(ReceiverHit) : 0);
 }
 
-// The slices of the fluence and mean-direction volumes held. Every kWindowSlices − 1 slices the
-// view rays advance (the ray states are read and written once for that many planes); a ray may
-// turn back kWindowSlices − 2 slices before it reads one dropped.
-constexpr int kWindowSlices = 8;
+constexpr int kWindowSlices = kInterleavedWindowSlices;  // plane_sweep_view_window.h
 
 // The slices held across `axis`, fluence and direction.
 size_t windowBytes(const shared::GpuViewParams& p, const SweepAxis& axis) {
@@ -257,10 +255,9 @@ InterleavedViewCpu renderInterleavedCpu(
     };
 
     // The planes, the light first: each voxel-centre plane becomes the newest slice held, the
-    // sweeps adding into it in the order the volume path adds them (the same bits). Every
-    // kWindowSlices − 1 slices, and after the last, every view ray takes the steps whose samples
-    // the slices held complete: a sample not ready at one such turn needs a slice swept after it,
-    // so at the next its slices are among the kWindowSlices held.
+    // sweeps adding into it in the order the volume path adds them (the same bits). At each turn
+    // (interleavedViewTurn) every view ray takes the steps whose samples the slices held
+    // complete.
     const int planes = sweeps.empty() ? 0 : sweeps.front()->plan().planes;
     shared::ViewKernelCpu::FluenceWindow window = kernels.front().window;
     const int depth = res[axis.axis];
@@ -280,7 +277,7 @@ InterleavedViewCpu renderInterleavedCpu(
                 sweep->deposit(fluence.data() + base, direction.data() + base, 1, size_t(res[u]));
         }
         ++swept;
-        if ((swept - 1) % (kWindowSlices - 1) != 0 && swept != depth) continue;
+        if (!interleavedViewTurn(swept, depth)) continue;
         StageScope stage(timer, "view");
         // The slices held, by their place in the sweep: swept − kWindowSlices … swept − 1.
         const int oldest = std::max(swept - kWindowSlices, 0), newest = swept - 1;
