@@ -20,4 +20,8 @@ void ParamsBuffer::upload(const shared::GpuViewParams& params) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_VIEW_PARAMS, buffer_);
 }
 
+void ParamsBuffer::bind() const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_VIEW_PARAMS, buffer_);
+}
+
 }  // namespace eikon

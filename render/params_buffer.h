@@ -13,6 +13,8 @@ public:
     ParamsBuffer& operator=(const ParamsBuffer&) = delete;
     // Uploads and binds to EK_SSBO_VIEW_PARAMS.
     void upload(const shared::GpuViewParams& params);
+    // Binds to EK_SSBO_VIEW_PARAMS what was uploaded last.
+    void bind() const;
 
 private:
     unsigned buffer_ = 0;

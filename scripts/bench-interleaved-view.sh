@@ -10,16 +10,13 @@
 #   The runs are interleaved row by row so that a changing load hits every row alike.
 #   EIKON=path/to/eikon picks the binary; BASELINE=path/to/other/eikon adds its interleaved rows
 #   of the scenes it can render (labelled "baseline"), to compare two builds in one run.
-#   BACKEND=gpu times the GPU path (llvmpipe here: the software driver's cost, not a GPU's),
-#   without the dispersed scene, which the interleaved view disperses on the CPU twin only.
+#   BACKEND=gpu times the GPU path (llvmpipe here: the software driver's cost, not a GPU's).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 RUNS=${1:-3}
 EIKON=${EIKON:-build/apps/eikon}
 BASELINE=${BASELINE:-}
 BACKEND=${BACKEND:-cpu}
-SCENES="fog fog_abbe20 floor_from_above"
-[ "$BACKEND" = gpu ] && SCENES="fog floor_from_above"
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
 
@@ -70,7 +67,7 @@ PY
 echo "| scene | view | binary | sweep ms | view ms | samples behind | render s | peak RSS MB |"
 echo "|---|---|---|---:|---:|---:|---:|---:|"
 for _ in $(seq "$RUNS"); do
-    for scene in $SCENES; do
+    for scene in fog fog_abbe20 floor_from_above; do
         for view in volume interleaved; do
             row "$EIKON" this "$scene" "$view"
         done

@@ -9,7 +9,9 @@
 //                           with interleavedAll, after the last plane);
 //   EK_INTERLEAVED_COMPOSE  every pixel gets what its ray sees where it leaves.
 // The fluence units hold the window of slices (volume_bindings.glsl, EK_FLUENCE_WINDOW, which
-// the host defines); the exact trilinear path reads them (the slices wrap around).
+// the host defines); the exact trilinear path reads them (the slices wrap around). Under
+// dispersion each pixel has a ray a colour channel, and the host dispatches each channel's rays
+// with its channel's params and ∇n (rayChannel).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "volume_bindings.glsl"
@@ -21,6 +23,11 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform int interleavedPass;
 uniform int interleavedAll;  // EK_INTERLEAVED_SHADE: every hit, the receivers' maps complete
+// Rays a pixel (3 under dispersion, one a colour channel, each dispatch bound to its channel's
+// params and ∇n; else 1), and the channel of this dispatch's rays: ray pixel·rayChannels +
+// rayChannel. EK_INTERLEAVED_COMPOSE reads them all.
+uniform int rayChannels;
+uniform int rayChannel;
 // The sweep (the CPU twin's FluenceWindow): toward +axis (order 1) or −axis, slices swept so far.
 uniform int windowOrder;
 uniform int windowSwept;
@@ -60,10 +67,10 @@ struct InterleavedHit {
 layout(std430, binding = EK_SSBO_INTERLEAVED_HITS) buffer InterleavedHits {
     InterleavedHit hits[];
 };
-int currentPixel = 0;  // the pixel whose ray receiverDeferred is called for
+int currentRay = 0;  // the ray receiverDeferred is called for
 bool receiverDeferred(int r, vec3 x, bool front, vec3 weight) {
-    hits[currentPixel].place = vec4(x, float(r));
-    hits[currentPixel].weight = vec4(weight, front ? 1.0f : 0.0f);
+    hits[currentRay].place = vec4(x, float(r));
+    hits[currentRay].weight = vec4(weight, front ? 1.0f : 0.0f);
     return true;
 }
 
@@ -83,7 +90,7 @@ layout(std430, binding = EK_SSBO_INTERLEAVED_RAYS) buffer InterleavedRays {
     StraightRay rays[];
 };
 #endif
-// Per pixel: bit 0 its ray met the volume, bit 1 it ended.
+// Per ray: bit 0 it met the volume, bit 1 it ended.
 layout(std430, binding = EK_SSBO_INTERLEAVED_FLAGS) buffer InterleavedFlags {
     uint flags[];
 };
@@ -92,8 +99,9 @@ layout(rgba32f, binding = EK_IMAGE_VIEW_OUTPUT) writeonly uniform image2D outIma
 void main() {
     const ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (px.x >= params.image.x || px.y >= params.image.y) return;
-    const int i = px.y * params.image.x + px.x;
-    currentPixel = i;
+    const int pixel = px.y * params.image.x + px.x;
+    const int i = pixel * rayChannels + rayChannel;
+    currentRay = i;
     if (interleavedPass == EK_INTERLEAVED_START) {
         const vec3 origin = vec3(params.cameraOrigin);
         const vec3 dir = pixelRayDirection(px.x, px.y);
@@ -141,19 +149,33 @@ void main() {
         rays[i].radiance += vec3(weight) * receiverRadiance(receiver, x, weight.w > 0.5f);
         hits[i].place.w = -1.0f;
     } else {
-        vec3 radiance, transmittance;
-        if ((flags[i] & 1u) == 0u) {
-            radiance = environmentRadiance(pixelRayDirection(px.x, px.y));
-            transmittance = vec3(1.0f);
-        } else {
-            transmittance = rays[i].transmittance;
+        // What each ray sees where it leaves (integrateViewRay's last line), alpha the mean
+        // transmittance: renderPixel's, or under dispersion renderPixelChannel's, channel by
+        // channel in its order of operations.
+        vec4 colour = vec4(0.0f);
+        for (int c = 0; c < rayChannels; ++c) {
+            const int ray = pixel * rayChannels + c;
+            vec3 radiance, transmittance;
+            if ((flags[ray] & 1u) == 0u) {
+                radiance = environmentRadiance(pixelRayDirection(px.x, px.y));
+                transmittance = vec3(1.0f);
+            } else {
+                transmittance = rays[ray].transmittance;
 #ifdef EK_INTERLEAVED_CURVED
-            radiance = rays[i].radiance + transmittance * environmentRadiance(rays[i].exitDir);
+                radiance =
+                    rays[ray].radiance + transmittance * environmentRadiance(rays[ray].exitDir);
 #else
-            radiance = rays[i].radiance + transmittance * environmentRadiance(rays[i].dir);
+                radiance = rays[ray].radiance + transmittance * environmentRadiance(rays[ray].dir);
 #endif
+            }
+            if (rayChannels == 1) {
+                colour = vec4(radiance, (transmittance.x + transmittance.y + transmittance.z) / 3.0f);
+            } else {
+                colour[c] = radiance[c];
+                colour.w = c == 0 ? transmittance[c] : colour.w + transmittance[c];
+                if (c == 2) colour.w = colour.w / 3.0f;
+            }
         }
-        imageStore(outImage, px,
-                   vec4(radiance, (transmittance.x + transmittance.y + transmittance.z) / 3.0f));
+        imageStore(outImage, px, colour);
     }
 }

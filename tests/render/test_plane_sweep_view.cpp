@@ -226,33 +226,21 @@ TEST_CASE("interleaved view: what it cannot do is refused in one line at its set
         scene.camera = test::cameraAt(glm::vec3(0.3f, 0.2f, 0.5f), glm::vec3(0.3f, 0.2f, -1.0f));
         CHECK_THAT(refusal(interleaved(scene)), Catch::Contains("camera outside"));
     }
-    SECTION("dispersion on the GPU") {
-        Scene scene = lensInFog(16);
-        scene.materials[1].abbe = 20.0f;
-        scene = interleaved(scene);
-        FrameRenderer renderer(scene, Backend::Cpu);
-        renderer.render(0);  // the volume the scene renders in
-        const RenderVolume& volume = renderer.volume();
-        ViewSetup setup =
-            makeViewSetup(scene, volume, makeCameraFrame(scene.camera, volume.bounds, 40, 30));
-        PlaneSweepTransportSettings settings;
-        settings.sweep.interleavedView = 1;
-        PlaneSweepTransport gpu(settings, TransportDevice{true, false, false});
-        CHECK_THROWS_WITH(gpu.configure(scene, setup),
-                          Catch::Contains("does not disperse on the GPU"));
-    }
 }
 
 TEST_CASE("interleaved view: the GPU equals the CPU twin; reruns are byte-identical",
           "[plane_sweep][interleaved][gpu]") {
     // The lens in fog with curved rays, a sharp ball whose grazing rays turn back against the
-    // sweep, and a receiver wall behind the fog with straight rays: the sweeps in lockstep on the
-    // GPU, the rays in buffers between dispatches.
+    // sweep, the lens dispersing (three rays a pixel), and a receiver wall behind the fog with
+    // straight rays: the sweeps in lockstep on the GPU, the rays in buffers between dispatches.
     Scene curved = interleaved(lensInFog(20));
     Scene sharp = lensInFog(20);
     sharp.materials[1].ior = 1.5f;
     sharp.sources[1].falloff = 0.02f;
     sharp = interleaved(sharp);
+    Scene dispersing = lensInFog(20);
+    dispersing.materials[1].abbe = 20.0f;
+    dispersing = interleaved(dispersing);
     Scene straight = lensInFog(20, false);
     ReceiverSpec wall;
     wall.axis = 2;
@@ -260,7 +248,7 @@ TEST_CASE("interleaved view: the GPU equals the CPU twin; reruns are byte-identi
     wall.albedo = glm::vec3(0.7f, 0.6f, 0.5f);
     straight.receivers.push_back(wall);
     straight = interleaved(straight);
-    for (const Scene* scene : {&curved, &sharp, &straight}) {
+    for (const Scene* scene : {&curved, &sharp, &dispersing, &straight}) {
         FrameRenderer cpu(*scene, Backend::Cpu);
         const Image twin = cpu.render(0);
         FrameRenderer gpu(*scene, Backend::Gpu);

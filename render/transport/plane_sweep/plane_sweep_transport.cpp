@@ -67,10 +67,6 @@ void PlaneSweepTransport::configure(const Scene& scene, ViewSetup& setup) {
     if (!lightAllThroughFluence(scene, setup)) return;
     if (settings_.sweep.interleavedView) {
         const std::string at = where + "/view";
-        if (device_.gpu && shared::curvedRays(setup.params) && dispersesView(setup))
-            throw Error(at,
-                        "the interleaved view does not disperse on the GPU yet (its CPU twin "
-                        "does): use --backend cpu, or \"view\": \"volume\"");
         checkInterleavedView(setup, settings_.sweep, at);
         interleaved_ = true;
         checkMemory(at, double(interleavedViewBytes(setup)),

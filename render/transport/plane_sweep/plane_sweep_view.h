@@ -33,6 +33,7 @@
 namespace eikon {
 
 class GpuStageTimer;
+class ParamsBuffer;
 class RefractionVolumesGpu;
 class ShaderProgram;
 class VolumeTextures;
@@ -79,7 +80,7 @@ InterleavedViewCpu renderInterleavedCpu(const ViewSetup& setup,
 // (PlaneSweepGpu::sweepWindowed), the window as two RGBA32F volumes of res[u] × res[w] × 8 slices,
 // and one dispatch of view_interleaved.comp over the pixels at each turn; each pixel's ray state
 // (the shared CurvedRay or StraightRay, laid out by the driver) stays in a buffer between them.
-// Dispersion is not ported (refused); receivers are, as on the twin.
+// Receivers and dispersion as on the twin.
 class InterleavedViewGpu {
 public:
     // exactMath: the sweep's (PlaneSweepGpu).
@@ -103,10 +104,13 @@ public:
 
 private:
     ShaderProgram& program(bool curved);
-    void allocate(const shared::GpuViewParams& p, const SweepAxis& axis, size_t rayStride);
+    void allocate(const shared::GpuViewParams& p, const SweepAxis& axis, size_t rayStride,
+                  int channels);
 
     PlaneSweepGpu sweep_;
     std::unique_ptr<ShaderProgram> curved_, straight_;
+    // Under dispersion: red, green and blue's params (channelViewParams), then the scene's.
+    std::unique_ptr<ParamsBuffer> params_[4];
     unsigned window_[2] = {0, 0};  // fluence, mean direction
     glm::ivec3 windowSize_{0};
     unsigned output_ = 0;

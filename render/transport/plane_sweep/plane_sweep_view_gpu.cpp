@@ -6,10 +6,12 @@
 #include "core/error.h"
 #include "render/gpu_timer.h"
 #include "render/image.h"
+#include "render/params_buffer.h"
 #include "render/refraction_volume.h"
 #include "render/shader_program.h"
 #include "render/transport/plane_sweep/plane_sweep_view.h"
 #include "render/transport/plane_sweep/plane_sweep_view_window.h"
+#include "render/view_params.h"
 #include "render/volume_textures.h"
 #include "shaders/shared/bindings.h"
 
@@ -75,7 +77,7 @@ ShaderProgram& InterleavedViewGpu::program(bool curved) {
 }
 
 void InterleavedViewGpu::allocate(const shared::GpuViewParams& p, const SweepAxis& axis,
-                                  size_t stride) {
+                                  size_t stride, int channels) {
     const glm::ivec3 res(p.resolution);
     const glm::ivec3 window(res[(axis.axis + 1) % 3], res[(axis.axis + 2) % 3],
                             kInterleavedWindowSlices);
@@ -100,18 +102,18 @@ void InterleavedViewGpu::allocate(const shared::GpuViewParams& p, const SweepAxi
         outputWidth_ = width;
         outputHeight_ = height;
     }
-    const size_t pixels = size_t(width) * size_t(height);
-    allocateBuffer(rays_, pixels * stride);
-    allocateBuffer(flags_, pixels * sizeof(GLuint));
-    allocateBuffer(hits_, pixels * 2 * sizeof(glm::vec4));
+    const size_t rays = size_t(width) * size_t(height) * size_t(channels);
+    allocateBuffer(rays_, rays * stride);
+    allocateBuffer(flags_, rays * sizeof(GLuint));
+    allocateBuffer(hits_, rays * 2 * sizeof(glm::vec4));
     allocateBuffer(counters_, 2 * sizeof(GLuint));
     if (glGetError() != GL_NO_ERROR)
         throw Error(kWhere, "the driver refused the view rays' buffers or the window of " +
                                 std::to_string(window.x) + "x" + std::to_string(window.y) + "x" +
                                 std::to_string(window.z));
     windowBytes_ = 2 * size_t(window.x) * size_t(window.y) * size_t(window.z) * sizeof(glm::vec4);
-    rayBytes_ = pixels * (stride + sizeof(GLuint) +
-                          (shared::receiverCount(p) > 0 ? 2 * sizeof(glm::vec4) : 0));
+    rayBytes_ = rays * (stride + sizeof(GLuint) +
+                        (shared::receiverCount(p) > 0 ? 2 * sizeof(glm::vec4) : 0));
 }
 
 Image InterleavedViewGpu::render(const ViewSetup& setup, VolumeTextures& fields,
@@ -119,15 +121,25 @@ Image InterleavedViewGpu::render(const ViewSetup& setup, VolumeTextures& fields,
                                  const PlaneSweepSettings& settings, unsigned environmentTexture,
                                  GpuStageTimer* timer) {
     const shared::GpuViewParams& p = setup.params;
-    if (shared::curvedRays(p) && dispersesView(setup))
-        throw Error(kWhere, "dispersion is not ported to the GPU yet");
     if (shared::environmentType(p) == EK_ENVIRONMENT_IMAGE && !environmentTexture)
         throw Error(kWhere, "the environment image was not uploaded");
     const SweepAxis axis = interleavedSweepAxis(setup);
     const bool curved = shared::curvedRays(p);
+    // Under dispersion a ray a colour channel, each dispatched with its channel's params (uploaded
+    // here once a frame; the sweeps read the scene's, bound again after) and ∇n volume.
+    const bool dispersed = curved && dispersesView(setup);
+    const int channels = dispersed ? 3 : 1;
+    if (dispersed)
+        for (int c = 0; c < 4; ++c) {
+            if (!params_[c]) params_[c] = std::make_unique<ParamsBuffer>();
+            params_[c]->upload(c < 3 ? channelViewParams(setup, c) : p);
+        }
+    const auto gradientOf = [&](int c) {
+        return dispersed ? refraction.channelGradientTexture(c) : refraction.gradientTexture();
+    };
     ShaderProgram& view = program(curved);
     if (timer) timer->begin("view");
-    allocate(p, axis, rayStride(view));
+    allocate(p, axis, rayStride(view), channels);
     const int width = p.image.x, height = p.image.y;
     const int depth = p.resolution[axis.axis];
     const bool receivers = shared::receiverCount(p) > 0;
@@ -135,8 +147,6 @@ Image InterleavedViewGpu::render(const ViewSetup& setup, VolumeTextures& fields,
     // Binds what the view's dispatches read (the sweep's dispatches rebind their own).
     const auto bindView = [&] {
         fields.bind();
-        glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
-        glBindTexture(GL_TEXTURE_3D, refraction.gradientTexture());
         glActiveTexture(GL_TEXTURE0 + EK_UNIT_ENVIRONMENT);
         glBindTexture(GL_TEXTURE_2D, environmentTexture);
         glActiveTexture(GL_TEXTURE0 + EK_UNIT_FLUENCE);
@@ -150,12 +160,26 @@ Image InterleavedViewGpu::render(const ViewSetup& setup, VolumeTextures& fields,
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_INTERLEAVED_COUNTERS, counters_);
         sweep_.bindReceiverMap();
         view.use();
+        view.setInt("rayChannels", channels);
     };
     const auto dispatch = [&](int pass) {
         view.setInt("interleavedPass", pass);
         glDispatchCompute(GLuint((width + local[0] - 1) / local[0]),
                           GLuint((height + local[1] - 1) / local[1]), 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    };
+    // A pass over every channel's rays, each with its channel's params and ∇n; the scene's params
+    // bound again after.
+    const auto dispatchRays = [&](int pass) {
+        for (int c = 0; c < channels; ++c) {
+            if (dispersed) params_[c]->bind();
+            glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
+            glBindTexture(GL_TEXTURE_3D, gradientOf(c));
+            glActiveTexture(GL_TEXTURE0);
+            view.setInt("rayChannel", c);
+            dispatch(pass);
+        }
+        if (dispersed) params_[3]->bind();
     };
     // The window after `swept` slices: the CPU twin's (renderInterleavedCpu).
     const auto setWindow = [&](int swept) {
@@ -169,21 +193,21 @@ Image InterleavedViewGpu::render(const ViewSetup& setup, VolumeTextures& fields,
     };
     bindView();
     setWindow(0);
-    dispatch(kPassStart);
+    dispatchRays(kPassStart);
     if (timer) timer->end();
 
     int lastSwept = 0;
     sweep_.sweepWindowed(
-        setup, fields, refraction, settings, axis, window_, kInterleavedWindowSlices, false, timer,
-        [&](int swept) { return interleavedViewTurn(swept, depth); },
+        setup, fields, refraction, settings, axis, window_, kInterleavedWindowSlices, dispersed,
+        timer, [&](int swept) { return interleavedViewTurn(swept, depth); },
         [&](int swept) {
             if (timer) timer->begin("view");
             bindView();
             setWindow(swept);
-            dispatch(kPassAdvance);
+            dispatchRays(kPassAdvance);
             if (receivers) {
                 view.setInt("interleavedAll", 0);
-                dispatch(kPassShade);
+                dispatchRays(kPassShade);
             }
             lastSwept = swept;
             if (timer) timer->end();
@@ -193,11 +217,11 @@ Image InterleavedViewGpu::render(const ViewSetup& setup, VolumeTextures& fields,
     bindView();
     // With no light to sweep the rays read no fluence (the window is zero): they finish at once.
     setWindow(lastSwept > 0 ? lastSwept : depth);
-    if (lastSwept == 0) dispatch(kPassAdvance);
+    if (lastSwept == 0) dispatchRays(kPassAdvance);
     // The receivers' maps are complete: the hits left see them.
     if (receivers) {
         view.setInt("interleavedAll", 1);
-        dispatch(kPassShade);
+        dispatchRays(kPassShade);
     }
     glBindImageTexture(EK_IMAGE_VIEW_OUTPUT, output_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     dispatch(kPassCompose);
