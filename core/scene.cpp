@@ -394,6 +394,13 @@ MaterialSpec readMaterial(const Value& value) {
     scene_detail::readParticleColor(object, material);
     material.fresnel = material.gladstoneDale == 0.0f;
     if (auto fresnel = object.optional("fresnel")) material.fresnel = fresnel->boolean();
+    if (auto roughness = object.optional("roughness")) {
+        material.roughness = roughness->floatNumber(Range::closed(0.0, 1.0));
+        if (material.roughness > 0.0f && (!material.fresnel || material.ior == 1.0f))
+            roughness->fail(
+                "\"roughness\" is of a sharp surface's highlights: it needs a "
+                "refracting material (\"ior\" > 1) with \"fresnel\": true");
+    }
     object.finish();
     return material;
 }

@@ -136,6 +136,10 @@ struct MaterialSpec {
     // hot air), which reflects nothing however steep its gradient is on the grid. The parser
     // makes it false for Gladstone–Dale materials.
     bool fresnel = true;
+    // The roughness of its sharp surfaces (with `fresnel`) for the lights' specular highlights
+    // seen on them (shaders/shared/specular.h: Cook–Torrance with GGX, Magnus's thesis §4.3), in
+    // (0, 1]; 0: none (a smooth surface mirrors a light to a point no pixel resolves).
+    float roughness = 0.0f;
     // Dispersion (core/dispersion.h): ior is n_d, the green channel's index, and abbe the Abbe
     // number V_d that parts red and blue from it; 0: n the same in every channel.
     float abbe = 0.0f;

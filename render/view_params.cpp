@@ -213,6 +213,7 @@ ViewSetup makeViewSetup(const Scene& scene, const RenderVolume& volume, const Ca
         // y: a sharp surface, only where the material refracts at all (fresnel.h).
         g.slot = glm::ivec4(slot, mat.fresnel && mat.indexSlope() != 0.0f ? 1 : 0,
                             clipMask(scene, mat.name), colorSlot + 1);
+        g.surface = glm::vec4(mat.roughness, 0.0f, 0.0f, 0.0f);
     }
     for (size_t l = 0; l < scene.lights.size(); ++l) p.lights[l] = packLight(scene.lights[l]);
     // n ≡ 1 everywhere takes straight rays and needs no ∇n volume.

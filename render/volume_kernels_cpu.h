@@ -121,6 +121,7 @@ struct ViewKernelCpu : VolumeAccessCpu {
     // clang-format off
 #include "shaders/shared/environment.h"
 #include "shaders/shared/fresnel.h"
+#include "shaders/shared/specular.h"
 #include "shaders/shared/view_march.h"
     // clang-format on
 };

@@ -20,6 +20,7 @@ bool receiverDeferred(int r, vec3 x, bool front, vec3 weight) { return false; }
 #include "shared/environment.h"
 #include "shared/material_index.h"
 #include "shared/fresnel.h"
+#include "shared/specular.h"
 #include "shared/view_march.h"
 
 #ifndef EK_VIEW_PER_CHANNEL

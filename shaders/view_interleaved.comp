@@ -77,6 +77,7 @@ bool receiverDeferred(int r, vec3 x, bool front, vec3 weight) {
 #include "shared/environment.h"
 #include "shared/material_index.h"
 #include "shared/fresnel.h"
+#include "shared/specular.h"
 #include "shared/view_march.h"
 
 // Each pixel's ray, curved or straight (curvedRays(params)): the host binds a buffer of the kind

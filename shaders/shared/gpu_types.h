@@ -57,6 +57,9 @@ struct GpuMaterial {
     // particleColorOverStep): its own slot, or the raw field's where a transfer function maps its
     // own
     ivec4 slot;
+    // x: the roughness of its sharp surfaces' specular highlights (materialRoughness, specular.h);
+    // 0: none. yzw: 0.
+    vec4 surface;
 };
 
 struct GpuLight {
@@ -256,6 +259,9 @@ inline int materialClipMask(const GpuMaterial& m) {
 inline int materialColorSlot(const GpuMaterial& m) {
     return m.slot.w - 1;  // the slot its particle colour reads; −1: no particle colour
 }
+inline float materialRoughness(const GpuMaterial& m) {
+    return m.surface.x;  // its sharp surfaces' highlights (specular.h); 0: none
+}
 inline int lightType(const GpuLight& l) {
     return int(l.position.w);  // EK_LIGHT_*
 }
@@ -297,6 +303,7 @@ inline int receiverMapStart(const GpuReceiver& r) {
 #define materialFresnel(m) ((m).slot.y != 0)
 #define materialClipMask(m) ((m).slot.z)
 #define materialColorSlot(m) ((m).slot.w - 1)
+#define materialRoughness(m) ((m).surface.x)
 #define lightType(l) (int((l).position.w))
 #define lightVersineOuter(l) ((l).direction.w)
 #define lightVersineInner(l) ((l).radiance.w)

@@ -5,8 +5,9 @@
 // every sample (like vdb_render). Rays that leave the volume see environmentRadiance
 // (environment.h); rays that reach a receiver (receivers.h) stop there and see its diffuse
 // reflection. Curved rays crossing the sharp surface of a refracting material (fresnel.h) keep
-// 1 − R of their transmittance and see R of what lies in the mirror direction. Needs
-// optics.h, receivers.h, ray_equation.h, environment.h, fresnel.h and, from the includer,
+// 1 − R of their transmittance and see R of what lies in the mirror direction, and the lights'
+// highlights where the material has a roughness. Needs optics.h, receivers.h, ray_equation.h,
+// environment.h, fresnel.h, specular.h and, from the includer,
 // `vec4 fetchReceiverTexel(int index)`: the irradiance (rgb) of a texel of the receiver map;
 // `bool viewSampleReady(vec3 p)`: whether a step's sample may be shaded now; and
 // `bool receiverDeferred(int r, vec3 x, bool front, vec3 weight)`: whether the includer takes a
@@ -89,6 +90,67 @@ vec3 receiverRadiance(int r, vec3 x, bool front) {
         irradiance += e * cosine * lightShadow(l, x, p, toLight, lightDistance);
     }
     return vec3(params.receivers[r].albedo) * (1.0f / EK_PI) * irradiance;
+}
+
+// The roughness of the sharp surface a crossing from volume index position pStart to pEnd went
+// through: that of the sharp material whose field changed most over it (materialRoughness); 0
+// where none of them has highlights.
+float crossingRoughness(vec3 pStart, vec3 pEnd) {
+    float roughness = 0.0f;
+    float largest = 0.0f;
+    for (int m = 0; m < materialCount(params); ++m) {
+        if (!materialFresnel(params.materials[m])) continue;
+        const int slot = materialSlot(params.materials[m]);
+        const float change = abs(sampleField(slot, pEnd) - sampleField(slot, pStart));
+        if (change > largest) {
+            largest = change;
+            roughness = materialRoughness(params.materials[m]);
+        }
+    }
+    return roughness;
+}
+
+// Whether some material's sharp surfaces show highlights.
+bool anyRoughSurfaces() {
+    for (int m = 0; m < materialCount(params); ++m)
+        if (materialFresnel(params.materials[m]) && materialRoughness(params.materials[m]) > 0.0f)
+            return true;
+    return false;
+}
+
+// The lights' specular highlights (specular.h) seen toward unit v (pointing to the viewer) on a
+// sharp surface of the given roughness crossed from index n1 (the viewer's side) to n2, the light
+// taken at world point x where the crossing began (on the viewer's side, before the surface
+// passes it on): through the fluence, its coherent part (the fluence rate times
+// |Σ lum·dir| / Σ lum, from the mean direction, as receivers take it); the other lights straight,
+// with their transmittance. normalSum: the ∇n gathered over the crossing (fresnel.h).
+vec3 surfaceHighlights(vec3 x, vec3 normalSum, vec3 v, float roughness, float n1, float n2) {
+    const float size = length(normalSum);
+    if (!(size > 0.0f) || !(roughness > 0.0f)) return vec3(0.0f);
+    const vec3 normal = normalSum / size;
+    const vec3 p = worldToVolumeIndex(x);
+    vec3 highlight = vec3(0.0f);
+    if (anyLightInFluence(params) && viewSampleReady(p)) {
+        const vec3 h = volumeVoxelSize();
+        const vec3 fluxLength = vec3(sampleVolume(EK_FLUENCE_SLOT, p));
+        const vec3 weightedDir = vec3(sampleVolume(EK_FLUENCE_DIRECTION_SLOT, p));
+        const float lum = dot(fluxLength, vec3(0.2126f, 0.7152f, 0.0722f));
+        const float len = length(weightedDir);
+        if (lum > 0.0f && len > 0.0f)
+            highlight += fluxLength / (h.x * h.y * h.z) * min(len / lum, 1.0f) *
+                         ggxSpecular(normal, v, -weightedDir / len, roughness, n1, n2);
+    }
+    for (int l = 0; l < lightCount(params); ++l) {
+        if (lightInFluence(params, l)) continue;  // above
+        vec3 toLight;
+        float lightDistance;
+        const vec3 e = lightIrradiance(l, x, toLight, lightDistance);
+        if (e.x + e.y + e.z <= 0.0f) continue;
+        const float reflected = ggxSpecular(normal, v, toLight, roughness, n1, n2);
+        if (!(reflected > 0.0f)) continue;
+        highlight += e * reflected * lightShadow(l, x, p, toLight, lightDistance);
+    }
+    return highlight;
 }
 
 // Radiance reaching the camera along a ray, and the ray's transmittance through the volume.
@@ -285,6 +347,17 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
             if (transmitted < 1.0f) {
                 const vec3 weight = r.transmittance * (1.0f - transmitted);
                 const vec3 mirror = surfaceMirrorDirection(vNext, vec3(r.surfaceNormal), n1);
+                if (anyRoughSurfaces()) {
+                    // The lights' highlights, seen from where the ray came (v: back along its
+                    // incident direction, the mirror direction reflected again).
+                    const vec3 normal = normalize(vec3(r.surfaceNormal));
+                    const vec3 v = 2.0f * dot(mirror, normal) * normal - mirror;
+                    const float roughness =
+                        crossingRoughness(worldToVolumeIndex(r.crossingStart), q);
+                    r.radiance +=
+                        r.transmittance * surfaceHighlights(r.crossingStart, vec3(r.surfaceNormal),
+                                                            v, roughness, n1, r.walk.z);
+                }
                 if (r.kept < r.keep) {
                     KeptReflection k;
                     k.origin = vec4(r.crossingStart, 0.0f);

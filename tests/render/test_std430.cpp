@@ -86,7 +86,8 @@ using Layout = std::map<std::string, Member>;
 
 Layout materialLayout() {
     return {EK_MEMBER(GpuMaterial, absorption), EK_MEMBER(GpuMaterial, scattering),
-            EK_MEMBER(GpuMaterial, emission), EK_MEMBER(GpuMaterial, slot)};
+            EK_MEMBER(GpuMaterial, emission), EK_MEMBER(GpuMaterial, slot),
+            EK_MEMBER(GpuMaterial, surface)};
 }
 
 Layout lightLayout() {
