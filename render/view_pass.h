@@ -55,8 +55,10 @@ public:
                  unsigned environmentTexture = 0, const ViewDispersionGpu* dispersion = nullptr);
 
 private:
-    std::unique_ptr<ShaderProgram> program_;
-    std::unique_ptr<ShaderProgram> perChannelProgram_;  // dispersion's, made when first needed
+    // view.comp's variant for one colour channel a dispatch (dispersion) and with the lights'
+    // highlights (EK_SPECULAR), made when first needed; [0] the common one.
+    ShaderProgram& program(bool perChannel, bool specular);
+    std::unique_ptr<ShaderProgram> programs_[4];
     bool hardwareTrilinear_ = false;
     unsigned outputTexture_ = 0;
     int outputWidth_ = 0, outputHeight_ = 0;

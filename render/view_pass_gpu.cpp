@@ -13,17 +13,26 @@ namespace eikon {
 
 namespace {
 
-std::unique_ptr<ShaderProgram> makeViewProgram(bool hardwareTrilinear, bool perChannel) {
+std::unique_ptr<ShaderProgram> makeViewProgram(bool hardwareTrilinear, bool perChannel,
+                                               bool specular) {
     std::vector<std::string> defines;
     if (hardwareTrilinear) defines.push_back("EK_HARDWARE_TRILINEAR");
     if (perChannel) defines.push_back("EK_VIEW_PER_CHANNEL");
+    if (specular) defines.push_back("EK_SPECULAR");
     return std::make_unique<ShaderProgram>(ShaderProgram::compute("view.comp", defines));
 }
 
 }  // namespace
 
-ViewPassGpu::ViewPassGpu(bool hardwareTrilinear)
-    : program_(makeViewProgram(hardwareTrilinear, false)), hardwareTrilinear_(hardwareTrilinear) {}
+ViewPassGpu::ViewPassGpu(bool hardwareTrilinear) : hardwareTrilinear_(hardwareTrilinear) {
+    programs_[0] = makeViewProgram(hardwareTrilinear, false, false);  // the common one, now
+}
+
+ShaderProgram& ViewPassGpu::program(bool perChannel, bool specular) {
+    std::unique_ptr<ShaderProgram>& slot = programs_[(perChannel ? 1 : 0) + (specular ? 2 : 0)];
+    if (!slot) slot = makeViewProgram(hardwareTrilinear_, perChannel, specular);
+    return *slot;
+}
 
 ViewPassGpu::~ViewPassGpu() {
     if (outputTexture_) glDeleteTextures(1, &outputTexture_);
@@ -63,12 +72,15 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
         glDispatchCompute(GLuint((width + local[0] - 1) / local[0]),
                           GLuint((height + local[1] - 1) / local[1]), 1);
     };
+    // The lights' highlights are a variant of their own, so that a scene without them runs the
+    // code it always ran (shaders/shared/view_march.h, EK_SPECULAR).
+    const bool specular = shared::curvedRays(p) && shared::anySurfaceHighlights(p);
     if (shared::curvedRays(p) && dispersesView(setup)) {
         // One dispatch per channel, each with its channel's n and ∇n volume, adding its channel
         // to what the one before wrote (view.comp, EK_VIEW_PER_CHANNEL).
         if (!dispersion || !dispersion->params)
             throw Error("view pass", "dispersion needs each channel's gradient volume");
-        if (!perChannelProgram_) perChannelProgram_ = makeViewProgram(hardwareTrilinear_, true);
+        ShaderProgram& perChannel = program(true, specular);
         glBindImageTexture(EK_IMAGE_VIEW_OUTPUT, outputTexture_, 0, GL_FALSE, 0, GL_READ_WRITE,
                            GL_RGBA32F);
         for (int c = 0; c < 3; ++c) {
@@ -76,12 +88,12 @@ Image ViewPassGpu::render(const ViewSetup& setup, VolumeTextures& textures,
             glActiveTexture(GL_TEXTURE0 + EK_UNIT_GRADIENT);
             glBindTexture(GL_TEXTURE_3D, dispersion->gradientTextures[c]);
             glActiveTexture(GL_TEXTURE0);
-            dispatch(*perChannelProgram_);
+            dispatch(perChannel);
             glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         }
         dispersion->params->upload(p);
     } else {
-        dispatch(*program_);
+        dispatch(program(false, specular));
     }
     glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
     if (timer) timer->end();

@@ -12,6 +12,10 @@
 #include "shaders/shared/gpu_types.h"
 #include "shaders/shared/material_index.h"  // at file scope: fresnel.h calls it
 
+// The lights' highlights on sharp surfaces (view_march.h): always compiled here, skipped at run
+// time where no material has them (the GPU compiles them only into a variant of its own).
+#define EK_SPECULAR
+
 EK_NAMESPACE_BEGIN
 
 // What volume_bindings.glsl gives the shaders: field values and light transmittances by slot.

@@ -160,6 +160,13 @@ inline bool allLightsInFluence(const GpuViewParams& p) {
 inline int receiverCount(const GpuViewParams& p) {
     return p.pipeline.w;
 }
+// Whether some material's sharp surfaces show the lights' highlights (view_march.h
+// anyRoughSurfaces, on the host: which view shader variant to run).
+inline bool anySurfaceHighlights(const GpuViewParams& p) {
+    for (int m = 0; m < p.resolution.w; ++m)
+        if (p.materials[m].slot.y != 0 && p.materials[m].surface.x > 0.0f) return true;
+    return false;
+}
 inline int lightCount(const GpuViewParams& p) {
     return p.image.z;
 }

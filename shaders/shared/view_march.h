@@ -5,8 +5,10 @@
 // every sample (like vdb_render). Rays that leave the volume see environmentRadiance
 // (environment.h); rays that reach a receiver (receivers.h) stop there and see its diffuse
 // reflection. Curved rays crossing the sharp surface of a refracting material (fresnel.h) keep
-// 1 − R of their transmittance and see R of what lies in the mirror direction, and the lights'
-// highlights where the material has a roughness. Needs optics.h, receivers.h, ray_equation.h,
+// 1 − R of their transmittance and see R of what lies in the mirror direction, and, with
+// EK_SPECULAR (the CPU twin always; on the GPU a variant for the scenes that have them, so that
+// the others run the code they always ran, to the instruction), the lights' highlights where the
+// material has a roughness. Needs optics.h, receivers.h, ray_equation.h,
 // environment.h, fresnel.h, specular.h and, from the includer,
 // `vec4 fetchReceiverTexel(int index)`: the irradiance (rgb) of a texel of the receiver map;
 // `bool viewSampleReady(vec3 p)`: whether a step's sample may be shaded now; and
@@ -347,6 +349,7 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
             if (transmitted < 1.0f) {
                 const vec3 weight = r.transmittance * (1.0f - transmitted);
                 const vec3 mirror = surfaceMirrorDirection(vNext, vec3(r.surfaceNormal), n1);
+#ifdef EK_SPECULAR
                 if (anyRoughSurfaces()) {
                     // The lights' highlights, seen from where the ray came (v: back along its
                     // incident direction, the mirror direction reflected again).
@@ -358,6 +361,7 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
                         r.transmittance * surfaceHighlights(r.crossingStart, vec3(r.surfaceNormal),
                                                             v, roughness, n1, r.walk.z);
                 }
+#endif
                 if (r.kept < r.keep) {
                     KeptReflection k;
                     k.origin = vec4(r.crossingStart, 0.0f);

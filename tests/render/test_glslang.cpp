@@ -39,23 +39,28 @@ std::vector<Variant> variants() {
           "test/std430_view_params.comp", "test/std430_particles.comp",
           "test/wavefront_compile.comp"})
         list.push_back({file, none});
-    // View: texture-unit filtering (EK_HARDWARE_TRILINEAR) × one channel a dispatch (dispersion).
+    // View: texture-unit filtering (EK_HARDWARE_TRILINEAR) × one channel a dispatch (dispersion)
+    // × the lights' highlights (EK_SPECULAR).
     for (bool trilinear : {false, true})
-        for (bool perChannel : {false, true}) {
-            std::vector<std::string> defines;
-            if (trilinear) defines.push_back("EK_HARDWARE_TRILINEAR");
-            if (perChannel) defines.push_back("EK_VIEW_PER_CHANNEL");
-            list.push_back({"view.comp", defines});
-        }
+        for (bool perChannel : {false, true})
+            for (bool specular : {false, true}) {
+                std::vector<std::string> defines;
+                if (trilinear) defines.push_back("EK_HARDWARE_TRILINEAR");
+                if (perChannel) defines.push_back("EK_VIEW_PER_CHANNEL");
+                if (specular) defines.push_back("EK_SPECULAR");
+                list.push_back({"view.comp", defines});
+            }
     // Light volumes: filtering.
     for (const char* file : {"light_sweep.comp", "light_march.comp"}) {
         list.push_back({file, none});
         list.push_back({file, {"EK_HARDWARE_TRILINEAR"}});
     }
-    // The plane sweep's interleaved view: curved or straight rays (always the window's exact
-    // filtering).
+    // The plane sweep's interleaved view: curved or straight rays, the curved with highlights
+    // (always the window's exact filtering).
     list.push_back({"view_interleaved.comp", {"EK_FLUENCE_WINDOW"}});
     list.push_back({"view_interleaved.comp", {"EK_FLUENCE_WINDOW", "EK_INTERLEAVED_CURVED"}});
+    list.push_back(
+        {"view_interleaved.comp", {"EK_FLUENCE_WINDOW", "EK_INTERLEAVED_CURVED", "EK_SPECULAR"}});
     // The plane sweep: exact math.
     list.push_back({"plane_sweep.comp", none});
     list.push_back({"plane_sweep.comp", {"EK_EXACT_MATH"}});

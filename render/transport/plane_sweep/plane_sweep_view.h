@@ -103,12 +103,14 @@ public:
     size_t rayBytes() const { return rayBytes_; }  // rays, flags and receiver hits
 
 private:
-    ShaderProgram& program(bool curved);
+    // view_interleaved.comp's variant: curved or straight rays, with the lights' highlights or
+    // not; made when first needed.
+    ShaderProgram& program(bool curved, bool specular);
     void allocate(const shared::GpuViewParams& p, const SweepAxis& axis, size_t rayStride,
                   int channels);
 
     PlaneSweepGpu sweep_;
-    std::unique_ptr<ShaderProgram> curved_, straight_;
+    std::unique_ptr<ShaderProgram> programs_[4];
     // Under dispersion: red, green and blue's params (channelViewParams), then the scene's.
     std::unique_ptr<ParamsBuffer> params_[4];
     unsigned window_[2] = {0, 0};  // fluence, mean direction

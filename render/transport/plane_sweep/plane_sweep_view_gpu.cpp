@@ -65,11 +65,12 @@ InterleavedViewGpu::~InterleavedViewGpu() {
     glDeleteBuffers(4, buffers);
 }
 
-ShaderProgram& InterleavedViewGpu::program(bool curved) {
-    std::unique_ptr<ShaderProgram>& slot = curved ? curved_ : straight_;
+ShaderProgram& InterleavedViewGpu::program(bool curved, bool specular) {
+    std::unique_ptr<ShaderProgram>& slot = programs_[(curved ? 1 : 0) + (specular ? 2 : 0)];
     if (!slot) {
         std::vector<std::string> defines = {"EK_FLUENCE_WINDOW"};
         if (curved) defines.push_back("EK_INTERLEAVED_CURVED");
+        if (specular) defines.push_back("EK_SPECULAR");  // the lights' highlights (view_march.h)
         slot = std::make_unique<ShaderProgram>(
             ShaderProgram::compute("view_interleaved.comp", defines));
     }
@@ -137,7 +138,7 @@ Image InterleavedViewGpu::render(const ViewSetup& setup, VolumeTextures& fields,
     const auto gradientOf = [&](int c) {
         return dispersed ? refraction.channelGradientTexture(c) : refraction.gradientTexture();
     };
-    ShaderProgram& view = program(curved);
+    ShaderProgram& view = program(curved, curved && shared::anySurfaceHighlights(p));
     if (timer) timer->begin("view");
     allocate(p, axis, rayStride(view), channels);
     const int width = p.image.x, height = p.image.y;
