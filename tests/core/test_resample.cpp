@@ -77,7 +77,7 @@ TEST_CASE("resampling follows the field's transform: a translated field gives a 
     CHECK(worst < 1e-5);   // float rounding of the shifted sample positions only
 }
 
-TEST_CASE("procedural shapes on one field form a union; mismatched voxels are an error",
+TEST_CASE("procedural shapes on one field form a union, mismatched voxels are an error",
           "[resample][sources]") {
     Scene scene = sceneReading("density");
     scene.sources = {sphere({-0.5f, 0, 0}, 0.4f, 1.0f, 0.05f),

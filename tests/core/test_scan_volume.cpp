@@ -256,7 +256,7 @@ TEST_CASE("Headerless raw files: layout from the name, or given", "[scan]") {
                    named + ": holds 48 bytes of samples, and 4×3×3 uint16 is 72 bytes"));
 }
 
-TEST_CASE("A window maps stored values to [0, 1]; negative density is refused", "[scan]") {
+TEST_CASE("A window maps stored values to [0, 1], negative density is refused", "[scan]") {
     const std::string dir = eikon::test::scratchDir("scan_window");
     const std::string path = dir + "/hu_4x3x2_int16.raw";
     std::vector<std::uint16_t> samples = testSamples();

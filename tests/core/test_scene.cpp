@@ -181,7 +181,7 @@ TEST_CASE("a simulation source needs the scene's simulation", "[scene]") {
         Catch::Contains("s.json:/sources/0/file") && Catch::Contains("unknown key"));
 }
 
-TEST_CASE("render.integrator names the view rays' integrator; others are errors", "[scene]") {
+TEST_CASE("render.integrator names the view rays' integrator, others are errors", "[scene]") {
     const std::string head =
         R"({"sources": [{"type": "sphere", "field": "n"}], "materials": [{"name": "glass", )"
         R"("field": "n", "ior": 1.5}], "render": {"integrator": )";

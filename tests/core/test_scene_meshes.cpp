@@ -56,7 +56,7 @@ TEST_CASE("a mesh carries its optics as materials over its own two fields", "[sc
     CHECK(glm::length(placePoint(point.positions[0] + local, m) - (p + motion)) < 1e-5f);
 }
 
-TEST_CASE("shapes make closed meshes; a quaternion rotation is read in glTF order",
+TEST_CASE("shapes make closed meshes, a quaternion rotation is read in glTF order",
           "[scene][meshes]") {
     const Scene scene = parseMeshes(R"([
         {"name": "a", "shape": {"type": "icosphere", "radius": 0.25, "subdivisions": 2}, "ior": 2.4},

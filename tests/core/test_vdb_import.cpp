@@ -249,7 +249,7 @@ TEST_CASE("double-precision grids are narrowed to float fields", "[vdb]") {
     CHECK(f->activeVoxelCount() == 1 + 512);
 }
 
-TEST_CASE("a grid of an unregistered type is skipped by name; the rest of the file loads",
+TEST_CASE("a grid of an unregistered type is skipped by name, the rest of the file loads",
           "[vdb][bad-input]") {
     ensureOpenVdbInitialized();
     const std::string dir = scratchDir("vdb_unregistered");

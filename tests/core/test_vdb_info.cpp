@@ -90,7 +90,7 @@ TEST_CASE("NaN and Inf values are counted, and kept out of the value range", "[v
     CHECK(lines == 2);
 }
 
-TEST_CASE("an unnamed grid is labelled; an int grid is not 'stored as half'", "[vdb][info]") {
+TEST_CASE("an unnamed grid is labelled, an int grid is not 'stored as half'", "[vdb][info]") {
     ensureOpenVdbInitialized();
     auto unnamed = openvdb::FloatGrid::create(0.0f);
     unnamed->getAccessor().setValue({0, 0, 0}, 1.0f);

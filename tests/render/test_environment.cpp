@@ -157,7 +157,7 @@ TEST_CASE("gradient environment: rays up, down and level see zenith, ground and 
     }
 }
 
-TEST_CASE("image environment: known directions see their regions; rotation turns them",
+TEST_CASE("image environment: known directions see their regions, rotation turns them",
           "[environment]") {
     const std::string file = scratchDir("environment_quarters") + "/quarters.exr";
     eikon::writeExr(file, quartersImage());

@@ -324,7 +324,7 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("the plane sweep's settings: errors at the pointer, each in its cache key; its GPU run",
+TEST_CASE("the plane sweep's settings: errors at the pointer, each in its cache key, its GPU run",
           "[light_transport][plane_sweep]") {
     SECTION("errors") {
         const Failure f = failureOf(

@@ -78,7 +78,7 @@ TEST_CASE("without the stop rule the round size changes nothing but the rounds",
     }
 }
 
-TEST_CASE("the stop rule cuts the last few photons; the energy still balances", "[photons]") {
+TEST_CASE("the stop rule cuts the last few photons, the energy still balances", "[photons]") {
     const PhotonScene s = grazingBall();
     PhotonSettings settings;
     settings.photonsPerSide = 64;

@@ -345,7 +345,7 @@ TEST_CASE("deposited flux-length in a homogeneous box equals Beer-Lambert", "[ph
     CHECK(worstDirection < 1e-3);
 }
 
-TEST_CASE("photon results are bit-identical for any thread count; seeds change only noise",
+TEST_CASE("photon results are bit-identical for any thread count, seeds change only noise",
           "[photons]") {
     const glm::vec3 d = glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f));
     PhotonScene s(24, 1.5f, glm::vec3(1.0f, 2.0f, 4.0f), d, ball, glm::vec3(1.0f, 0.7f, 0.4f));
@@ -490,7 +490,7 @@ constexpr double kOctantFluenceTolerance = 4e-2;
 // Per slab of 8 voxel layers of a spot's inner cone (1000-3600 voxels): measured ≤ 4e-3.
 constexpr double kConeSlabFluenceTolerance = 2e-2;
 
-TEST_CASE("a point light inside the box emits 4 pi I; in vacuum every photon escapes",
+TEST_CASE("a point light inside the box emits 4 pi I, in vacuum every photon escapes",
           "[photons]") {
     const glm::vec3 color(2.0f, 1.0f, 0.5f);
     const glm::vec3 light(0.13f, -0.21f, 0.17f);

@@ -158,7 +158,7 @@ TEST_CASE("interleaved view: the same bytes on one thread as on all",
 }
 
 TEST_CASE(
-    "interleaved view: no fluence volume; its planes grow with a slice, its rays with the "
+    "interleaved view: no fluence volume, its planes grow with a slice, its rays with the "
     "image",
     "[plane_sweep][interleaved]") {
     const auto memoryAt = [](int resolution, bool interleave) {
@@ -228,7 +228,7 @@ TEST_CASE("interleaved view: what it cannot do is refused in one line at its set
     }
 }
 
-TEST_CASE("interleaved view: the GPU equals the CPU twin; reruns are byte-identical",
+TEST_CASE("interleaved view: the GPU equals the CPU twin, reruns are byte-identical",
           "[plane_sweep][interleaved][gpu]") {
     // The lens in fog with curved rays, a sharp ball whose grazing rays turn back against the
     // sweep, the lens dispersing (three rays a pixel), and a receiver wall behind the fog with

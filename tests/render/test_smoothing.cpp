@@ -30,7 +30,7 @@ unsigned makeTexture(glm::ivec3 res, const std::vector<glm::vec4>& data) {
 
 }  // namespace
 
-TEST_CASE("an impulse spreads with the binomial 1-2-1 weights; total mass is kept inside",
+TEST_CASE("an impulse spreads with the binomial 1-2-1 weights, total mass is kept inside",
           "[smoothing]") {
     const glm::ivec3 res(7, 6, 5);
     std::vector<glm::vec4> v(size_t(res.x * res.y * res.z), glm::vec4(0.0f));

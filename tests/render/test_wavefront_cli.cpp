@@ -100,7 +100,7 @@ TEST_CASE("eikon render --stats: the wavefront's splits, removals and energy acc
 }
 
 TEST_CASE(
-    "Fresnel off in the wavefront settings or on the material: nothing reflected; bad keys "
+    "Fresnel off in the wavefront settings or on the material: nothing reflected, bad keys "
     "are named",
     "[cli][wavefront][fresnel]") {
     const std::string dir = scratchDir("cli_wavefront_fresnel");
