@@ -150,7 +150,8 @@ void printTransportStats(const FrameRenderer& renderer, const std::vector<StageT
     for (const StageTime& s : stats)
         if (s.name == method) ms += std::max(s.gpuMs, s.cpuMs);
     const TransportStats last = renderer.lastTransportStats();
-    // Rounds are the photon march's (its compaction passes); a method without them prints none.
+    // Rounds are the photon march's and the wavefront's (between them the lists are compacted);
+    // a method without them prints none.
     const std::string rounds =
         last.rounds > 0 ? ", " + std::to_string(last.rounds) + " rounds" : "";
     std::printf("  %s: %lld traced, %lld steps (%.1f per particle), %.2f M steps/s; %lld cut%s\n",

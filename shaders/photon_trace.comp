@@ -81,23 +81,7 @@ uniform dvec3 totalScale;    // per channel, for the totals
 
 vec4 fetchOctree(ivec3 voxel) { return texelFetch(octreeTex, voxel, 0); }
 
-void depositVoxel(ivec3 voxel, vec3 fluxLength, vec3 weightedDir) {
-    const ivec3 res = volumeResolution();
-    const int base = ((voxel.z * res.y + voxel.y) * res.x + voxel.x) * 12;
-    for (int c = 0; c < 3; ++c) {
-        const uvec2 f = toFixed(fluxLength[c], depositScale[c]);
-        EK_ADD_FIXED(deposits, base + 2 * c, f);
-        const uvec2 d = toFixed(weightedDir[c], depositScale.w);
-        EK_ADD_FIXED(deposits, base + 6 + 2 * c, d);
-    }
-}
-
-void depositReceiverTexel(int index, vec3 flux) {
-    for (int c = 0; c < 3; ++c) {
-        const uvec2 f = toFixed(flux[c], totalScale[c]);
-        EK_ADD_FIXED(receiverDeposits, index * 6 + 2 * c, f);
-    }
-}
+#include "particle_deposits.glsl"
 
 // The photon this invocation works on, or −1 for none. Direct dispatches cover photons
 // photonFirst .. photonFirst + photonCount − 1 in x; an indirect one (a round after the first)

@@ -30,6 +30,11 @@ inline double fromFixedPoint(int64_t q, double scale) {
     return scale > 0.0 ? double(q) / scale : 0.0;
 }
 
+// An int64 a shader kept as two's complement (low, high) uint words (shaders/fixed_point.glsl).
+inline int64_t joinFixedWords(const uint32_t* words) {
+    return int64_t(uint64_t(words[0]) | (uint64_t(words[1]) << 32));
+}
+
 // Rec. 709 luminance: the weight of the mean-direction channels.
 inline double rec709Luminance(glm::dvec3 c) {
     return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;

@@ -69,6 +69,13 @@
 #define EK_SSBO_INTERLEAVED_FLAGS 2     // per pixel: in the volume, ended
 #define EK_SSBO_INTERLEAVED_HITS 3      // per pixel: the receiver hit waiting to be shaded
 #define EK_SSBO_INTERLEAVED_COUNTERS 6  // view ray steps, samples behind the sweep
+// wavefront_trace.comp and wavefront_scan.comp (the wavefront's rounds), which never run beside the
+// photon passes or the octree's; the deposits, receiver sums and receiver map as photons.
+#define EK_SSBO_WAVE_LIST_IN 1   // GpuWavefrontEntry per patch of the list a round traces
+#define EK_SSBO_WAVE_LIST_OUT 2  // the list it leaves (a generating dispatch: the starting patches)
+#define EK_SSBO_WAVE_SCAN 3      // per patch its outcome and prefix sums, then the blocks' sums
+#define EK_SSBO_WAVE_ROUNDS 4    // the round header, then the totals (shared/wavefront_rounds.h)
+#define EK_SSBO_WAVE_ROOT_STATE 6  // per starting patch: patches made, first request of the round
 // The voxelizer's passes (voxelize_*.comp) run apart from the volume passes: binding 0 is theirs
 // until render/params_buffer.cpp binds the parameters again before the next volume pass.
 #define EK_SSBO_VOXELIZE_POSITIONS 0  // voxelize_toggle.comp: vertex positions

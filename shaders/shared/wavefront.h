@@ -43,6 +43,9 @@
 // follow rays that part for good, as across a refracting object's silhouette), and splitting
 // again would not mend it. It ends; its power counts as dropped.
 #define EK_PATCH_TORN 8
+// A round's outcome only (patchRound), never a final state: the patch is wider than the split
+// length and asks to be split between rounds, where the patch budget grants or refuses it.
+#define EK_PATCH_WANTS_SPLIT 9
 
 // What happens to a patch whose orientation flips (it passed through a caustic).
 #define EK_WAVEFRONT_KEEP 0    // it goes on, inverted: power is conserved through the focus
@@ -63,6 +66,22 @@ struct GpuWavefrontPatch {
                          // w: the sign its orientation had when it started (±1)
     vec4 surface;        // its centroid's walk across surfaces (fresnel.h surfaceWalkStart)
     vec4 surfaceNormal;  // xyz: the ∇n met in the surface crossing under way; w: 0
+};
+
+// What a patch has lost so far, carried between rounds beside it so that its account adds the
+// same float sums as one uninterrupted trace; zero in a new patch (a child starts its own) but for
+// its root.
+struct GpuWavefrontTally {
+    vec4 lost;       // xyz: power extinguished; w: 1 once the budget refused it a split
+    vec4 reflected;  // xyz: power reflected at surfaces (Fresnel), not followed; w: 0
+    ivec4 root;      // x: the starting patch it descends from (its index in the pass's first
+                     // list, shared/wavefront_rounds.h); yzw: 0
+};
+
+// A patch and its tally: one entry of a round's list on the GPU (shared/wavefront_rounds.h).
+struct GpuWavefrontEntry {
+    GpuWavefrontPatch piece;  // ("patch" is a GLSL keyword)
+    GpuWavefrontTally tally;
 };
 
 #endif
@@ -474,6 +493,41 @@ int patchStep(EK_INOUT(GpuWavefrontPatch) p, float dt, int integrator, int atCau
     }
     if (max(power.x, max(power.y, power.z)) < p.power.w) return EK_PHOTON_DROPPED;
     return EK_PHOTON_ACTIVE;
+}
+
+// One round of a patch's trace, the loop both backends run on every patch of a round's list
+// (render/transport/wavefront/wavefront_tracing_cpu.cpp, shaders/wavefront_trace.comp): steps
+// until the patch ends, asks to be split, or has taken roundSteps steps. Before each step, as a
+// trace without rounds would: past maxSteps the patch is cut; wider than splitVoxels it tears at
+// maxLevel and otherwise asks for a split (EK_PATCH_WANTS_SPLIT, 0 steps of that request), unless
+// the budget refused it one before (tally.lost.w), when it goes on unsplit for good. Returns
+// EK_PHOTON_ACTIVE when the round's steps ran out, EK_PATCH_WANTS_SPLIT, or the state it ended
+// in; steps and crossings (orientation flips, removals) count this round's.
+int patchRound(EK_INOUT(GpuWavefrontPatch) p, EK_INOUT(GpuWavefrontTally) tally, int roundSteps,
+               int maxSteps, float splitVoxels, int maxLevel, float dt, int integrator,
+               int atCaustic, int samples, float surfaceSlope, EK_INOUT(int) steps,
+               EK_INOUT(int) crossings) {
+    vec3 lost = vec3(tally.lost);
+    vec3 reflected = vec3(tally.reflected);
+    const bool refused = tally.lost.w != 0.0f;
+    int state = EK_PHOTON_ACTIVE;
+    for (int i = 0; i < roundSteps && state == EK_PHOTON_ACTIVE; ++i) {
+        if (int(p.state.y) >= maxSteps) {
+            state = EK_PHOTON_CUT;
+            break;
+        }
+        if (!refused && patchNeedsSplit(p, splitVoxels)) {
+            state = int(p.state.z) >= maxLevel ? EK_PATCH_TORN : EK_PATCH_WANTS_SPLIT;
+            break;
+        }
+        const float sign = p.state.w;
+        state = patchStep(p, dt, integrator, atCaustic, samples, surfaceSlope, lost, reflected);
+        steps += 1;
+        if (p.state.w != sign || state == EK_PATCH_REMOVED) crossings += 1;
+    }
+    tally.lost = vec4(lost, tally.lost.w);
+    tally.reflected = vec4(reflected, tally.reflected.w);
+    return state;
 }
 
 #endif

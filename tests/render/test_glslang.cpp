@@ -72,6 +72,16 @@ std::vector<Variant> variants() {
             if (generate) defines.push_back("EK_PHOTON_GENERATE");
             list.push_back({"photon_trace.comp", defines});
         }
+    // The wavefront: exact math × the generating, tracing and scattering passes, and the prefix
+    // sums.
+    for (bool exact : {false, true})
+        for (const char* pass : {"", "EK_WAVEFRONT_GENERATE", "EK_WAVEFRONT_SCATTER"}) {
+            std::vector<std::string> defines;
+            if (exact) defines.push_back("EK_EXACT_MATH");
+            if (*pass) defines.push_back(pass);
+            list.push_back({"wavefront_trace.comp", defines});
+        }
+    list.push_back({"wavefront_scan.comp", none});
     return list;
 }
 

@@ -235,8 +235,10 @@ TEST_CASE("std430 array strides of GpuMaterial and GpuLight equal their C++ size
     CHECK(glGetError() == GL_NO_ERROR);
 }
 
-TEST_CASE("std430 layouts of the particle structs GpuPhoton and GpuWavefrontPatch equal C++",
-          "[std430][gl]") {
+TEST_CASE(
+    "std430 layouts of the particle structs GpuPhoton, GpuWavefrontPatch and GpuWavefrontEntry "
+    "equal C++",
+    "[std430][gl]") {
     static_assert(std::is_standard_layout<GpuWavefrontPatch>::value &&
                       std::is_trivially_copyable<GpuWavefrontPatch>::value,
                   "offsetof and memcpy");
@@ -267,5 +269,21 @@ TEST_CASE("std430 layouts of the particle structs GpuPhoton and GpuWavefrontPatc
     compareBlock(driver, blockIndex(program.id(), "W"), patches);
     CHECK(driver.at("patchList[0].surfaceNormal").topLevelArrayStride ==
           static_cast<GLint>(sizeof(GpuWavefrontPatch)));
+
+    // The round lists' entries: a patch, then its tally (the members the shader touches).
+    using eikon::shared::GpuWavefrontEntry;
+    using eikon::shared::GpuWavefrontTally;
+    const auto at = [](size_t tallyMember) {
+        return static_cast<GLint>(offsetof(GpuWavefrontEntry, tally) + tallyMember);
+    };
+    CHECK(driver.at("entryList[0].piece.power").offset ==
+          static_cast<GLint>(offsetof(GpuWavefrontEntry, piece) +
+                             offsetof(GpuWavefrontPatch, power)));
+    CHECK(driver.at("entryList[0].tally.lost").offset == at(offsetof(GpuWavefrontTally, lost)));
+    CHECK(driver.at("entryList[0].tally.reflected").offset ==
+          at(offsetof(GpuWavefrontTally, reflected)));
+    CHECK(driver.at("entryList[0].tally.root").offset == at(offsetof(GpuWavefrontTally, root)));
+    CHECK(driver.at("entryList[0].tally.root").topLevelArrayStride ==
+          static_cast<GLint>(sizeof(GpuWavefrontEntry)));
     CHECK(glGetError() == GL_NO_ERROR);
 }

@@ -22,10 +22,9 @@
 
 namespace eikon {
 
+class DepositVolumesGpu;
 class GpuStageTimer;
 class PhotonTracerGpu;
-class ShaderProgram;
-class VolumeSmootherGpu;
 class VolumeTextures;
 
 // The smoothed photon volumes, the receiver map and the trace's totals: what the CPU twin computes,
@@ -83,15 +82,8 @@ public:
     PhotonVolumes download() const;
 
 private:
-    void allocate(glm::ivec3 resolution);
-
     std::unique_ptr<PhotonTracerGpu> tracer_;
-    std::unique_ptr<VolumeSmootherGpu> smoother_;
-    std::unique_ptr<ShaderProgram> resolve_;
-    unsigned raw_[2] = {0, 0};       // radiance, direction before smoothing
-    unsigned smoothed_[2] = {0, 0};  // after
-    unsigned receiverMap_ = 0;       // SSBO: vec4 irradiance per receiver map texel
-    glm::ivec3 resolution_{0};
+    std::unique_ptr<DepositVolumesGpu> volumes_;
 };
 
 }  // namespace eikon

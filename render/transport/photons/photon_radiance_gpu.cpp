@@ -7,6 +7,7 @@
 #include "render/gpu_transfer.h"
 #include "render/shader_program.h"
 #include "render/smoothing.h"
+#include "render/transport/deposit_volumes_gpu.h"
 #include "render/transport/photons/photon_radiance.h"
 #include "render/transport/photons/photon_tracing_gpu.h"
 #include "render/volume_textures.h"
@@ -16,78 +17,23 @@ namespace eikon {
 
 PhotonRadianceGpu::PhotonRadianceGpu(bool exactMath)
     : tracer_(std::make_unique<PhotonTracerGpu>(exactMath)),
-      smoother_(std::make_unique<VolumeSmootherGpu>()),
-      resolve_(std::make_unique<ShaderProgram>(ShaderProgram::compute("photon_resolve.comp"))) {}
+      volumes_(std::make_unique<DepositVolumesGpu>()) {}
 
-PhotonRadianceGpu::~PhotonRadianceGpu() {
-    glDeleteTextures(2, raw_);
-    glDeleteTextures(2, smoothed_);
-    if (receiverMap_) glDeleteBuffers(1, &receiverMap_);
-}
-
-void PhotonRadianceGpu::allocate(glm::ivec3 res) {
-    if (raw_[0] && res == resolution_) return;
-    glDeleteTextures(2, raw_);
-    glDeleteTextures(2, smoothed_);
-    glGenTextures(2, raw_);
-    glGenTextures(2, smoothed_);
-    for (unsigned* t : {&raw_[0], &raw_[1], &smoothed_[0], &smoothed_[1]}) {
-        glBindTexture(GL_TEXTURE_3D, *t);
-        glTexStorage3D(GL_TEXTURE_3D, 1, GL_RGBA32F, res.x, res.y, res.z);
-        setVolumeSampling();
-    }
-    glBindTexture(GL_TEXTURE_3D, 0);
-    if (glGetError() != GL_NO_ERROR)
-        throw Error("photon radiance", "the driver refused four RGBA32F volumes of " +
-                                           std::to_string(res.x) + "x" + std::to_string(res.y) +
-                                           "x" + std::to_string(res.z));
-    resolution_ = res;
-}
+PhotonRadianceGpu::~PhotonRadianceGpu() = default;
 
 void PhotonRadianceGpu::compute(const ViewSetup& setup, VolumeTextures& fields,
                                 const RefractionVolumesGpu& refraction,
                                 const PhotonSettings& settings, GpuStageTimer* timer,
                                 bool dispersion) {
     const shared::GpuViewParams& p = setup.params;
-    const glm::ivec3 res(p.resolution.x, p.resolution.y, p.resolution.z);
-    allocate(res);
     tracer_->trace(setup, fields, refraction, settings, timer, dispersion);
-
-    if (timer) timer->begin("smooth");
-    // Neither volume may stay bound for sampling while images write it.
-    for (GLuint unit : {EK_UNIT_FLUENCE, EK_UNIT_FLUENCE_DIRECTION}) {
-        glActiveTexture(GL_TEXTURE0 + unit);
-        glBindTexture(GL_TEXTURE_3D, 0);
-    }
-    glActiveTexture(GL_TEXTURE0);
-    resolve_->use();
-    resolve_->setIVec3("resolution", res);
-    const glm::dvec4& s = tracer_->fixedPointScale();
-    glUniform4d(resolve_->uniformLocation("depositScale"), s.x, s.y, s.z, s.w);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_DEPOSITS, tracer_->depositBuffer());
-    glBindImageTexture(EK_IMAGE_PHOTON_RADIANCE_RAW, raw_[0], 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                       GL_RGBA32F);
-    glBindImageTexture(EK_IMAGE_PHOTON_DIRECTION_RAW, raw_[1], 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                       GL_RGBA32F);
-    glDispatchCompute(GLuint((res.x + 3) / 4), GLuint((res.y + 3) / 4), GLuint((res.z + 3) / 4));
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-    smoother_->smooth(raw_[0], smoothed_[0], res);
-    smoother_->smooth(raw_[1], smoothed_[1], res);
-    if (timer) timer->end();
-    // The map is read back and converted on the host by the twin's own code (a few hundred KB,
-    // once per photon trace), then uploaded for the view pass.
-    uploadVec4Buffer(receiverMap_, tracer_->receiverMap());
-    if (const GLenum err = glGetError(); err != GL_NO_ERROR)
-        throw Error("photon radiance", "OpenGL error " + std::to_string(err));
+    volumes_->compute(glm::ivec3(p.resolution.x, p.resolution.y, p.resolution.z),
+                      tracer_->depositBuffer(), tracer_->fixedPointScale(), tracer_->receiverMap(),
+                      timer);
 }
 
 void PhotonRadianceGpu::bind() const {
-    glActiveTexture(GL_TEXTURE0 + EK_UNIT_FLUENCE);
-    glBindTexture(GL_TEXTURE_3D, smoothed_[0]);
-    glActiveTexture(GL_TEXTURE0 + EK_UNIT_FLUENCE_DIRECTION);
-    glBindTexture(GL_TEXTURE_3D, smoothed_[1]);
-    glActiveTexture(GL_TEXTURE0);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_MAP, receiverMap_);
+    volumes_->bind();
 }
 
 int64_t PhotonRadianceGpu::lastPhotonsTraced() const {
@@ -109,8 +55,8 @@ int64_t PhotonRadianceGpu::lastSteps() const {
 PhotonVolumes PhotonRadianceGpu::download() const {
     const PhotonResultCpu traced = tracer_->download();
     PhotonVolumes out;
-    out.radiance = downloadRgbaVolume(smoothed_[0], resolution_);
-    out.direction = downloadRgbaVolume(smoothed_[1], resolution_);
+    out.radiance = volumes_->radiance();
+    out.direction = volumes_->direction();
     out.totals = traced.totals;
     out.receiverMap = traced.receiverMap;
     out.steps = traced.steps;

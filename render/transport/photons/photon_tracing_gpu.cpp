@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "render/gpu_timer.h"
+#include "render/gpu_transfer.h"
 #include "render/receiver_map.h"
 #include "render/shader_program.h"
 #include "render/transport/channel_passes.h"
@@ -26,47 +27,6 @@ constexpr int kLocalSize = EK_ROUND_GROUP;
 constexpr int kDepositChannels = 6;  // r, g, b, weighted direction x, y, z
 // escaped rgb, extinguished rgb, dropped rgb, steps, cut, received rgb
 constexpr int kTotalsCount = 14;
-
-// An int64 the shader kept as two's complement (low, high) uint words.
-int64_t joinWords(const GLuint* words) {
-    return int64_t(uint64_t(words[0]) | (uint64_t(words[1]) << 32));
-}
-
-void resizeBuffer(GLuint& buffer, size_t bytes) {
-    if (buffer) glDeleteBuffers(1, &buffer);
-    glGenBuffers(1, &buffer);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr,
-                 GL_DYNAMIC_COPY);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-}
-
-void clearBuffer(GLuint buffer) {
-    const GLuint zero = 0;
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-}
-
-template <typename T>
-std::vector<T> readBuffer(GLuint buffer, size_t count) {
-    std::vector<T> out(count);
-    if (count == 0) return out;
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(count * sizeof(T)), out.data());
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    return out;
-}
-
-// `count` words from word `first` of buffer.
-std::vector<GLuint> readWords(GLuint buffer, size_t first, size_t count) {
-    std::vector<GLuint> words(count);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(first * sizeof(GLuint)),
-                       GLsizeiptr(count * sizeof(GLuint)), words.data());
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    return words;
-}
 
 // Runs `program` over photons [base, base + count) of its range in dispatches the driver must
 // accept (GL promises 65535 work groups in x, fewer than a cube layout of N = 1024 needs): each
@@ -92,7 +52,7 @@ PhotonTracerGpu::PhotonTracerGpu(bool exactMath) {
         ShaderProgram::compute("photon_trace.comp", generateDefines));
     trace_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("photon_trace.comp", defines));
     round_ = std::make_unique<ShaderProgram>(ShaderProgram::compute("photon_round.comp"));
-    resizeBuffer(totals_, kTotalsCount * 2 * sizeof(GLuint));
+    resizeStorageBuffer(totals_, kTotalsCount * 2 * sizeof(GLuint));
 }
 
 PhotonTracerGpu::~PhotonTracerGpu() {
@@ -118,18 +78,18 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     // round lists hold one pass's indices at a time.
     const size_t slots = photonCount * size_t(passes);
     if (slots > photonCapacity_ || !photons_) {
-        resizeBuffer(photons_, slots * sizeof(shared::GpuPhoton));
-        resizeBuffer(rounds_, (EK_ROUND_HEADER + 2 * photonCount * passes) * sizeof(GLuint));
-        resizeBuffer(extinguished_, slots * sizeof(glm::vec4));
+        resizeStorageBuffer(photons_, slots * sizeof(shared::GpuPhoton));
+        resizeStorageBuffer(rounds_, (EK_ROUND_HEADER + 2 * photonCount * passes) * sizeof(GLuint));
+        resizeStorageBuffer(extinguished_, slots * sizeof(glm::vec4));
         photonCapacity_ = slots;
     }
     if (voxels > voxelCapacity_ || !deposits_) {
-        resizeBuffer(deposits_, voxels * kDepositChannels * 2 * sizeof(GLuint));
+        resizeStorageBuffer(deposits_, voxels * kDepositChannels * 2 * sizeof(GLuint));
         voxelCapacity_ = voxels;
     }
     const size_t receiverTexels = receiverMapTexels(setup.params);
     if (receiverTexels > receiverCapacity_ || !receiverDeposits_) {
-        resizeBuffer(receiverDeposits_, receiverTexels * 3 * 2 * sizeof(GLuint));
+        resizeStorageBuffer(receiverDeposits_, receiverTexels * 3 * 2 * sizeof(GLuint));
         receiverCapacity_ = receiverTexels;
     }
     if (glGetError() != GL_NO_ERROR)
@@ -148,10 +108,10 @@ void PhotonTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_RECEIVER_DEPOSITS, receiverDeposits_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_ROUNDS, rounds_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, EK_SSBO_PHOTON_EXTINGUISHED, extinguished_);
-    clearBuffer(deposits_);
-    clearBuffer(totals_);
-    clearBuffer(receiverDeposits_);
-    clearBuffer(rounds_);  // EK_ROUND_MARCHED counts over every pass
+    clearStorageBuffer(deposits_);
+    clearStorageBuffer(totals_);
+    clearStorageBuffer(receiverDeposits_);
+    clearStorageBuffer(rounds_);  // EK_ROUND_MARCHED counts over every pass
 
     int64_t tracedPerPass = 0;
     for (int pass = 0; pass < passes; ++pass) {
@@ -194,7 +154,7 @@ int64_t PhotonTracerGpu::setScales(const ViewSetup& setup, const PhotonPlan& pla
     // The emitted power sets the scales before anything is deposited; it is summed here in the
     // CPU twin's order (index order, in double), which a GPU reduction would not reproduce.
     const std::vector<shared::GpuPhoton> started =
-        readBuffer<shared::GpuPhoton>(photons_, plan.photons);
+        readStorageArray<shared::GpuPhoton>(photons_, plan.photons);
     warnLightsMissingVolume(setup, plan.lights, [&](size_t i) {
         return int(started[i].position.w) == EK_PHOTON_ACTIVE;
     });
@@ -274,9 +234,9 @@ void PhotonTracerGpu::marchPass(const PhotonPlan& plan, const PhotonSettings& se
 
 std::vector<glm::vec4> PhotonTracerGpu::receiverMap() const {
     const size_t sums = 3 * receiverMapTexels(params_);
-    const std::vector<GLuint> words = readBuffer<GLuint>(receiverDeposits_, 2 * sums);
+    const std::vector<GLuint> words = readStorageArray<GLuint>(receiverDeposits_, 2 * sums);
     std::vector<int64_t> fixed(sums);
-    for (size_t i = 0; i < sums; ++i) fixed[i] = joinWords(&words[2 * i]);
+    for (size_t i = 0; i < sums; ++i) fixed[i] = joinFixedWords(&words[2 * i]);
     const glm::dvec3 e = host_.totals.emitted;
     return receiverMapFromFixed(
         params_, fixed,
@@ -285,47 +245,49 @@ std::vector<glm::vec4> PhotonTracerGpu::receiverMap() const {
 }
 
 int64_t PhotonTracerGpu::stepsTaken() const {
-    return joinWords(readWords(totals_, 18, 2).data());
+    return joinFixedWords(readStorageWords(totals_, 18, 2).data());
 }
 
 int64_t PhotonTracerGpu::photonsCut() const {
-    return joinWords(readWords(totals_, 20, 2).data());
+    return joinFixedWords(readStorageWords(totals_, 20, 2).data());
 }
 
 int PhotonTracerGpu::rounds() const {
-    return int(readWords(rounds_, EK_ROUND_MARCHED, 1)[0]);
+    return int(readStorageWords(rounds_, EK_ROUND_MARCHED, 1)[0]);
 }
 
 PhotonResultCpu PhotonTracerGpu::download() const {
     PhotonResultCpu r = host_;
     const glm::ivec3 res = r.resolution;
     const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
-    r.photons = readBuffer<shared::GpuPhoton>(photons_, r.photons.size());
-    const std::vector<GLuint> totals = readBuffer<GLuint>(totals_, kTotalsCount * 2);
+    r.photons = readStorageArray<shared::GpuPhoton>(photons_, r.photons.size());
+    const std::vector<GLuint> totals = readStorageArray<GLuint>(totals_, kTotalsCount * 2);
     const glm::dvec4& scale = r.fixedPointScale;
     const glm::dvec3 totalScale(fixedPointScaleFor(r.totals.emitted.x, 1.0),
                                 fixedPointScaleFor(r.totals.emitted.y, 1.0),
                                 fixedPointScaleFor(r.totals.emitted.z, 1.0));
     for (int c = 0; c < 3; ++c) {
-        r.totals.escaped[c] = fromFixedPoint(joinWords(&totals[2 * c]), totalScale[c]);
-        r.totals.extinguished[c] = fromFixedPoint(joinWords(&totals[6 + 2 * c]), totalScale[c]);
-        r.totals.dropped[c] = fromFixedPoint(joinWords(&totals[12 + 2 * c]), totalScale[c]);
+        r.totals.escaped[c] = fromFixedPoint(joinFixedWords(&totals[2 * c]), totalScale[c]);
+        r.totals.extinguished[c] =
+            fromFixedPoint(joinFixedWords(&totals[6 + 2 * c]), totalScale[c]);
+        r.totals.dropped[c] = fromFixedPoint(joinFixedWords(&totals[12 + 2 * c]), totalScale[c]);
     }
-    r.steps = joinWords(&totals[18]);
-    r.photonsCut = joinWords(&totals[20]);
+    r.steps = joinFixedWords(&totals[18]);
+    r.photonsCut = joinFixedWords(&totals[20]);
     for (int c = 0; c < 3; ++c)
-        r.totals.received[c] = fromFixedPoint(joinWords(&totals[22 + 2 * c]), totalScale[c]);
+        r.totals.received[c] = fromFixedPoint(joinFixedWords(&totals[22 + 2 * c]), totalScale[c]);
     r.receiverMap = receiverMap();
     r.rounds = rounds();
 
-    const std::vector<GLuint> words = readBuffer<GLuint>(deposits_, voxels * kDepositChannels * 2);
+    const std::vector<GLuint> words =
+        readStorageArray<GLuint>(deposits_, voxels * kDepositChannels * 2);
     r.radiance.assign(voxels, glm::vec4(0.0f));
     r.direction.assign(voxels, glm::vec4(0.0f));
     for (size_t i = 0; i < voxels; ++i) {
         const GLuint* cell = &words[i * kDepositChannels * 2];
         for (int c = 0; c < 3; ++c) {
-            r.radiance[i][c] = float(fromFixedPoint(joinWords(cell + 2 * c), scale[c]));
-            r.direction[i][c] = float(fromFixedPoint(joinWords(cell + 6 + 2 * c), scale.w));
+            r.radiance[i][c] = float(fromFixedPoint(joinFixedWords(cell + 2 * c), scale[c]));
+            r.direction[i][c] = float(fromFixedPoint(joinFixedWords(cell + 6 + 2 * c), scale.w));
         }
     }
     return r;

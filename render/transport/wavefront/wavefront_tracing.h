@@ -1,7 +1,8 @@
 #pragma once
 // Eikonal wavefront tracing (Ihrke et al. 2007; docs: shaders/shared/wavefront.h): the CPU
-// twin, parallel over each light's starting patches with TBB, every patch's descendants traced
-// depth first on one thread with a stack of at most 3 · maxLevel + 1 patches.
+// twin, in the GPU's rounds (shaders/shared/wavefront_rounds.h): each round's list of patches in
+// parallel with TBB, the next list made by the same prefix sums, so that both backends trace the
+// same patches and refuse the same splits. Memory: the lists, at most max_patches entries.
 //
 // Output (x fastest, like DenseGrid), the photons' units (render/transport/photons/
 // photon_tracing.h): radiance rgb = Σ power·length per voxel, direction xyz = Σ luminance of that
@@ -36,8 +37,10 @@ struct WavefrontSettings {
     float stepVoxels = 1.0f;   // Δt, in optical voxel lengths of the smallest edge
     float splitVoxels = 1.0f;  // split a patch spanning more voxels than this along an axis
     int maxLevel = 8;  // split levels; a patch still too wide there has torn (EK_PATCH_TORN)
-    // All patches of a frame, at most: each starting patch may make maxPatches / starting patches
-    // (so the cap does not depend on thread timing); past it patches go on unsplit.
+    // Patches of a frame, at most (starting patches and 4 per split; under dispersion per colour
+    // channel), shared equally among the starting patches: each one's splits are granted in the
+    // rounds' list order while its share allows (so the cap does not depend on thread timing);
+    // the patches refused go on unsplit.
     int maxPatches = 1 << 22;
     float fluxThreshold = 1e-4f;  // drop a patch below this fraction of its initial power
     int maxSteps = 0;             // per patch; 0: 16 crossings of the volume at Δt
@@ -70,6 +73,8 @@ struct WavefrontResultCpu {
     int64_t causticCrossings = 0;  // orientation flips seen (kept or removed)
     int64_t patchesCut = 0;        // still active at maxSteps; power counts as dropped
     int maxLevelReached = 0;
+    int rounds = 0;           // rounds traced, all passes (shared/wavefront_rounds.h)
+    int64_t largestList = 0;  // the most patches a round's list held
     // Every patch's final state in the order it ended on its starting patch's thread: for
     // tests that follow the wavefront (empty unless keepPatches).
     std::vector<shared::GpuWavefrontPatch> patches;
@@ -84,6 +89,18 @@ struct WavefrontPlan {
     int maxSteps = 0;
 };
 WavefrontPlan planWavefronts(const ViewSetup& setup, const WavefrontSettings& settings);
+
+// The patches each of a pass's `startingPatches` may make, itself included
+// (shared/wavefront_rounds.h): max_patches shared equally, at least 1.
+int64_t wavefrontRootBudget(const WavefrontSettings& settings, int64_t startingPatches);
+
+// The Fresnel surface criterion the trace uses: settings.surfaceSlope where some material of
+// setup has sharp surfaces (fresnel.h anySurfaces), else 0 (none).
+float wavefrontSurfaceSlope(const ViewSetup& setup, const WavefrontSettings& settings);
+
+// The params of colour channel `channel`'s wavefronts under dispersion: that channel's n
+// (channelViewParams) and the lights' power in that channel alone.
+shared::GpuViewParams wavefrontChannelParams(const ViewSetup& setup, int channel);
 
 // The starting patches of every light, light after light in index order (inactive ones too).
 // slotGrids: the field volumes (a patch's walk across surfaces starts with their index there).

@@ -14,6 +14,7 @@
 #include "render/transport/photons/fixed_deposits_cpu.h"
 #include "render/transport/photons/lights_missing_volume.h"
 #include "render/transport/wavefront/wavefront_tracing.h"
+#include "shaders/shared/wavefront_rounds.h"
 
 EK_NAMESPACE_BEGIN
 
@@ -87,6 +88,24 @@ std::vector<shared::GpuWavefrontPatch> generatePatchesCpu(
     return patches;
 }
 
+int64_t wavefrontRootBudget(const WavefrontSettings& settings, int64_t startingPatches) {
+    return std::max<int64_t>(
+        1, int64_t(std::max(settings.maxPatches, 1)) / std::max<int64_t>(startingPatches, 1));
+}
+
+float wavefrontSurfaceSlope(const ViewSetup& setup, const WavefrontSettings& settings) {
+    shared::WavefrontKernelCpu kernel{{{setup.params}}};
+    return kernel.anySurfaces() ? std::max(settings.surfaceSlope, 0.0f) : 0.0f;
+}
+
+shared::GpuViewParams wavefrontChannelParams(const ViewSetup& setup, int channel) {
+    shared::GpuViewParams params = channelViewParams(setup, channel);
+    for (int l = 0; l < shared::lightCount(params); ++l)
+        for (int k = 0; k < 3; ++k)
+            if (k != channel) params.lights[l].radiance[k] = 0.0f;
+    return params;
+}
+
 namespace {
 
 // One wavefront per light, or under dispersion one per light and colour channel: the params its
@@ -103,16 +122,53 @@ std::vector<WavefrontPass> wavefrontPasses(const ViewSetup& setup,
         channelPassGradientsCpu(setup, gradient, channelGradients, "wavefront");
     if (gradients.size() == 1) return {{setup.params, &gradient}};
     std::vector<WavefrontPass> passes;
-    for (int c = 0; c < 3; ++c) {
-        WavefrontPass pass{channelViewParams(setup, c), gradients[c]};
-        for (int l = 0; l < shared::lightCount(pass.params); ++l)
-            for (int k = 0; k < 3; ++k)
-                if (k != c) pass.params.lights[l].radiance[k] = 0.0f;
-        passes.push_back(pass);
-    }
+    for (int c = 0; c < 3; ++c) passes.push_back({wavefrontChannelParams(setup, c), gradients[c]});
     return passes;
 }
 
+// The settings every patch's rounds read, derived once.
+struct WavefrontRoundSettings {
+    int maxSteps = 0;
+    float splitVoxels = 1.0f;
+    int maxLevel = 0;
+    float dt = 0.0f;
+    int integrator = EK_WAVEFRONT_RK4;
+    int atCaustic = EK_WAVEFRONT_KEEP;
+    int samples = 1;
+    float surfaceSlope = 0.0f;  // 0: no Fresnel (also where no material has a sharp surface)
+};
+
+WavefrontRoundSettings roundSettings(const ViewSetup& setup, const WavefrontSettings& settings,
+                                     const WavefrontPlan& plan) {
+    WavefrontRoundSettings r;
+    r.maxSteps = plan.maxSteps;
+    r.splitVoxels = std::max(settings.splitVoxels, 1e-3f);
+    r.maxLevel = std::max(settings.maxLevel, 0);
+    r.dt = plan.dt;
+    r.integrator = static_cast<int>(settings.integrator);
+    r.atCaustic = settings.atCaustic;
+    r.samples = std::max(settings.depositSamples, 1);
+    r.surfaceSlope = wavefrontSurfaceSlope(setup, settings);
+    return r;
+}
+
+// One round of one patch (patchRound), adding its steps and orientation flips.
+int tracePatchRound(shared::WavefrontKernelCpu& kernel, const WavefrontRoundSettings& r,
+                    shared::GpuWavefrontPatch& p, shared::GpuWavefrontTally& tally, int64_t& steps,
+                    int64_t& crossings) {
+    int roundSteps = 0, roundCrossings = 0;
+    const int state = kernel.patchRound(p, tally, EK_WAVE_ROUND_STEPS, r.maxSteps, r.splitVoxels,
+                                        r.maxLevel, r.dt, r.integrator, r.atCaustic, r.samples,
+                                        r.surfaceSlope, roundSteps, roundCrossings);
+    steps += roundSteps;
+    crossings += roundCrossings;
+    return state;
+}
+
+// Whether a round's outcome ends the patch (not a step cap, not a split request).
+bool endedInRound(int state) {
+    return state != EK_PHOTON_ACTIVE && state != EK_PATCH_WANTS_SPLIT;
+}
 }  // namespace
 
 WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
@@ -168,12 +224,12 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
 
     WavefrontCounters counters;
     // The power a patch that has ended leaves: escaped, received or dropped (cut, removed and
-    // torn included); a split patch leaves only what it extinguished, its power going to its
-    // children.
-    auto finish = [&](const shared::GpuWavefrontPatch& p, int state, glm::vec3 lost,
-                      glm::vec3 reflected) {
-        sums.finish(state, glm::vec3(p.power), lost, state == EK_PATCH_SPLIT);
-        sums.addReflected(reflected);
+    // torn included); a split patch leaves only what it extinguished and reflected, its power
+    // going on in its children.
+    auto finish = [&](const shared::GpuWavefrontPatch& p, int state,
+                      const shared::GpuWavefrontTally& tally) {
+        sums.finish(state, glm::vec3(p.power), glm::vec3(tally.lost), state == EK_PATCH_SPLIT);
+        sums.addReflected(glm::vec3(tally.reflected));
         if (state == EK_PHOTON_CUT) sums.addCut();
         if (state == EK_PATCH_REMOVED) {
             counters.removed.fetch_add(1, std::memory_order_relaxed);
@@ -182,82 +238,99 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
         if (state == EK_PATCH_TORN) counters.torn.fetch_add(1, std::memory_order_relaxed);
     };
 
-    const int integrator = static_cast<int>(settings.integrator);
-    const float splitVoxels = std::max(settings.splitVoxels, 1e-3f);
-    const int maxLevel = std::max(settings.maxLevel, 0);
-    const int samples = std::max(settings.depositSamples, 1);
-    const float surfaceSlope =
-        kernels.front().anySurfaces() ? std::max(settings.surfaceSlope, 0.0f) : 0.0f;
-    // Each starting patch's share of the patch budget, counting itself. Under dispersion each
-    // channel's wavefront has the whole budget, so that it is the wavefront a glass of that
-    // channel's n makes, whatever the budget.
-    std::vector<int64_t> activeInPass(passes.size(), 0);
-    for (uint32_t i : active) ++activeInPass[rootPass[i]];
-    std::vector<int64_t> budgets;
-    for (int64_t count : activeInPass)
-        budgets.push_back(std::max<int64_t>(
-            1, int64_t(std::max(settings.maxPatches, 1)) / std::max<int64_t>(count, 1)));
-    std::vector<std::vector<shared::GpuWavefrontPatch>> kept(keepPatches ? active.size() : 0);
+    const WavefrontRoundSettings round = roundSettings(setup, settings, plan);
 
-    tbb::parallel_for(
-        tbb::blocked_range<size_t>(0, active.size(), 4), [&](const tbb::blocked_range<size_t>& r) {
-            std::vector<shared::GpuWavefrontPatch> stack;
-            for (size_t k = r.begin(); k != r.end(); ++k) {
-                int64_t made = 1, steps = 0, splits = 0, refused = 0, crossings = 0;
-                int deepest = 0;
-                shared::WavefrontKernelCpu& kernel = kernels[rootPass[active[k]]];
-                const int64_t budget = budgets[rootPass[active[k]]];
-                stack.assign(1, roots[active[k]]);
-                while (!stack.empty()) {
-                    shared::GpuWavefrontPatch p = stack.back();
-                    stack.pop_back();
-                    glm::vec3 lost(0.0f);
-                    glm::vec3 reflected(0.0f);
-                    int state = EK_PHOTON_ACTIVE;
-                    bool wasRefused = false;  // counted once per patch, not per step
-                    while (state == EK_PHOTON_ACTIVE) {
-                        if (int(p.state.y) >= plan.maxSteps) {
-                            state = EK_PHOTON_CUT;
-                            break;
-                        }
-                        if (kernel.patchNeedsSplit(p, splitVoxels)) {
-                            if (int(p.state.z) >= maxLevel) {
-                                state = EK_PATCH_TORN;
-                                break;
-                            }
-                            if (made + 4 <= budget) {
-                                // Children pushed last to first, so child 0 is traced next.
-                                for (int c = 3; c >= 0; --c)
-                                    stack.push_back(kernel.patchChild(p, c));
-                                made += 4;
-                                ++splits;
-                                deepest = std::max(deepest, int(p.state.z) + 1);
-                                state = EK_PATCH_SPLIT;
-                                break;
-                            }
-                            refused += wasRefused ? 0 : 1;
-                            wasRefused = true;
-                        }
-                        const float sign = p.state.w;
-                        state = kernel.patchStep(p, plan.dt, integrator, settings.atCaustic,
-                                                 samples, surfaceSlope, lost, reflected);
-                        ++steps;
-                        if (p.state.w != sign || state == EK_PATCH_REMOVED) ++crossings;
+    // Pass after pass, its patches in rounds (shared/wavefront_rounds.h), as the GPU traces them.
+    std::vector<shared::GpuWavefrontPatch> list, next;
+    std::vector<shared::GpuWavefrontTally> tallies, nextTallies;
+    std::vector<int> outcome;
+    std::vector<int64_t> entry;
+    for (size_t pass = 0; pass < passes.size(); ++pass) {
+        shared::WavefrontKernelCpu& kernel = kernels[pass];
+        list.clear();
+        for (uint32_t i : active)
+            if (rootPass[i] == pass) list.push_back(roots[i]);
+        tallies.assign(list.size(), shared::GpuWavefrontTally{});
+        for (size_t r = 0; r < list.size(); ++r) tallies[r].root.x = int(r);
+        // Each starting patch's share of the budget, counting itself. Under dispersion each
+        // channel's wavefront has the whole budget, so that it is the wavefront a glass of that
+        // channel's n makes, whatever the budget.
+        const int64_t budget = wavefrontRootBudget(settings, int64_t(list.size()));
+        std::vector<int64_t> made(list.size(), 1);
+        counters.traced.fetch_add(int64_t(list.size()), std::memory_order_relaxed);
+        while (!list.empty()) {
+            ++result.rounds;
+            result.largestList = std::max(result.largestList, int64_t(list.size()));
+            outcome.assign(list.size(), EK_PHOTON_ACTIVE);
+            tbb::parallel_for(
+                tbb::blocked_range<size_t>(0, list.size(), 16),
+                [&](const tbb::blocked_range<size_t>& r) {
+                    int64_t steps = 0, crossings = 0;
+                    for (size_t i = r.begin(); i != r.end(); ++i) {
+                        const int state =
+                            tracePatchRound(kernel, round, list[i], tallies[i], steps, crossings);
+                        outcome[i] = state;
+                        if (!endedInRound(state)) continue;
+                        list[i].state.x = float(state);
+                        finish(list[i], state, tallies[i]);
                     }
-                    p.state.x = float(state);
-                    finish(p, state, lost, reflected);
-                    if (keepPatches && state != EK_PATCH_SPLIT) kept[k].push_back(p);
+                    sums.addSteps(steps);
+                    counters.crossings.fetch_add(crossings, std::memory_order_relaxed);
+                });
+            // The grants (each starting patch's first requests in list order while its share
+            // allows) and the prefix sums: where each patch's entries start in the next list.
+            int64_t requests = 0, granted = 0;
+            entry.resize(list.size() + 1);
+            entry[0] = 0;
+            for (size_t i = 0; i < list.size(); ++i) {
+                int64_t count = endedInRound(outcome[i]) ? 0 : 1;
+                if (outcome[i] == EK_PATCH_WANTS_SPLIT) {
+                    ++requests;
+                    int64_t& rootMade = made[size_t(tallies[i].root.x)];
+                    if (rootMade + 4 <= budget) {
+                        rootMade += 4;
+                        count = 4;
+                        ++granted;
+                    }
                 }
-                sums.addSteps(steps);
-                counters.traced.fetch_add(made, std::memory_order_relaxed);
-                counters.split.fetch_add(splits, std::memory_order_relaxed);
-                counters.refused.fetch_add(refused, std::memory_order_relaxed);
-                counters.crossings.fetch_add(crossings, std::memory_order_relaxed);
-                int seen = counters.maxLevel.load(std::memory_order_relaxed);
-                while (deepest > seen && !counters.maxLevel.compare_exchange_weak(seen, deepest)) {
-                }
+                entry[i + 1] = entry[i] + count;
             }
-        });
+            if (keepPatches)  // the ended patches in list order, round after round
+                for (size_t i = 0; i < list.size(); ++i)
+                    if (endedInRound(outcome[i])) result.patches.push_back(list[i]);
+            next.resize(size_t(entry.back()));
+            nextTallies.assign(next.size(), shared::GpuWavefrontTally{});
+            tbb::parallel_for(
+                tbb::blocked_range<size_t>(0, list.size(), 64),
+                [&](const tbb::blocked_range<size_t>& r) {
+                    for (size_t i = r.begin(); i != r.end(); ++i) {
+                        const size_t at = size_t(entry[i]);
+                        if (entry[i + 1] - entry[i] == 4) {
+                            for (int c = 0; c < 4; ++c) {
+                                next[at + c] = kernel.patchChild(list[i], c);
+                                nextTallies[at + c].root = tallies[i].root;
+                            }
+                            finish(list[i], EK_PATCH_SPLIT, tallies[i]);
+                            const int level = int(list[i].state.z) + 1;
+                            int seen = counters.maxLevel.load(std::memory_order_relaxed);
+                            while (level > seen &&
+                                   !counters.maxLevel.compare_exchange_weak(seen, level)) {
+                            }
+                        } else if (entry[i + 1] - entry[i] == 1) {
+                            next[at] = list[i];
+                            nextTallies[at] = tallies[i];
+                            // Refused a split: it goes on unsplit for good.
+                            if (outcome[i] == EK_PATCH_WANTS_SPLIT) nextTallies[at].lost.w = 1.0f;
+                        }
+                    }
+                });
+            counters.split.fetch_add(granted, std::memory_order_relaxed);
+            counters.refused.fetch_add(requests - granted, std::memory_order_relaxed);
+            counters.traced.fetch_add(4 * granted, std::memory_order_relaxed);
+            list.swap(next);
+            tallies.swap(nextTallies);
+        }
+    }
 
     sums.readTotals(result.totals);
     result.steps = sums.steps();
@@ -269,8 +342,6 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
     result.patchesTorn = counters.torn.load();
     result.causticCrossings = counters.crossings.load();
     result.maxLevelReached = counters.maxLevel.load();
-    for (auto& patches : kept)
-        result.patches.insert(result.patches.end(), patches.begin(), patches.end());
 
     result.receiverMap = sums.receiverMap(setup);
     sums.readVolumes(result.radiance, result.direction);

@@ -1,11 +1,14 @@
 #include "render/transport/wavefront/wavefront_transport.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "core/error.h"
 #include "core/memory_limit.h"
 #include "render/input_key.h"
 #include "render/smoothing.h"
+#include "render/transport/deposit_volumes_gpu.h"
+#include "render/transport/wavefront/wavefront_tracing_gpu.h"
 
 namespace eikon {
 namespace {
@@ -70,6 +73,8 @@ WavefrontTransportSettings readWavefrontTransportSettings(const json::Value* sec
 WavefrontTransport::WavefrontTransport(WavefrontTransportSettings settings, TransportDevice device)
     : settings_(std::move(settings)), device_(device) {}
 
+WavefrontTransport::~WavefrontTransport() = default;
+
 TransportNeeds WavefrontTransport::needs() const {
     // Particles advance by a fixed optical time: no octree, only ∇n.
     TransportNeeds n;
@@ -80,13 +85,20 @@ TransportNeeds WavefrontTransport::needs() const {
 
 void WavefrontTransport::configure(const Scene& scene, ViewSetup& setup) {
     if (!lightAllThroughFluence(scene, setup)) return;
-    // The starting patches are in memory at once; their descendants only a stack per thread.
+    // The starting patches, and the two lists of a pass's rounds: at most the budget's patches
+    // live at once (each was made, and a pass makes at most the budget, or one per starting
+    // patch where there are more), each with its tally (shared/wavefront_rounds.h).
     const WavefrontPlan plan = planWavefronts(setup, settings_.trace);
-    checkMemory(settings_.where.empty() ? scene.path + ":/render/light_transport" : settings_.where,
-                double(plan.patches) * double(sizeof(shared::GpuWavefrontPatch)),
+    const double live = std::max(double(settings_.trace.maxPatches), double(plan.patches));
+    const std::string where =
+        settings_.where.empty() ? scene.path + ":/render/light_transport" : settings_.where;
+    checkMemory(where,
+                double(plan.patches) * double(sizeof(shared::GpuWavefrontEntry)) +
+                    2.0 * live * double(sizeof(shared::GpuWavefrontEntry)),
                 std::to_string(plan.patches) + " starting patches (" +
-                    std::to_string(settings_.trace.patchesPerSide) + " per side)",
-                "lower per_side");
+                    std::to_string(settings_.trace.patchesPerSide) + " per side) and lists of " +
+                    std::to_string(settings_.trace.maxPatches) + " patches (max_patches)",
+                "lower per_side or max_patches");
 }
 
 std::vector<unsigned char> WavefrontTransport::cacheKey(
@@ -112,10 +124,33 @@ void WavefrontTransport::runCpu(const TransportInputsCpu& in) {
     cpu_.radiance = smoothVolumeCpu(traced.radiance, traced.resolution);
     cpu_.direction = smoothVolumeCpu(traced.direction, traced.resolution);
     cpu_.receiverMap = std::move(traced.receiverMap);
+    setResult(traced);
+}
+
+void WavefrontTransport::runGpu(const TransportInputsGpu& in) {
+    if (!gpu_) {
+        gpu_ = std::make_unique<WavefrontTracerGpu>(device_.exactMath);
+        volumesGpu_ = std::make_unique<DepositVolumesGpu>();
+    }
+    gpu_->trace(in.setup, in.fields, in.refraction, settings_.trace, in.timer, in.dispersion);
+    const shared::GpuViewParams& p = in.setup.params;
+    volumesGpu_->compute(glm::ivec3(p.resolution.x, p.resolution.y, p.resolution.z),
+                         gpu_->depositBuffer(), gpu_->fixedPointScale(), gpu_->receiverMap(),
+                         in.timer);
+    // The counts and the energy account: 200 bytes read back, for --stats and the benches.
+    setResult(gpu_->counts());
+}
+
+void WavefrontTransport::bindGpu() const {
+    if (volumesGpu_) volumesGpu_->bind();
+}
+
+void WavefrontTransport::setResult(const WavefrontResultCpu& traced) {
     cpu_.totals = traced.totals;
     cpu_.steps = traced.steps;
     cpu_.photonsTraced = traced.patchesTraced;
     cpu_.photonsCut = traced.patchesCut;
+    cpu_.rounds = traced.rounds;
     stats_ = TransportStats{};
     stats_.steps = traced.steps;
     stats_.particlesTraced = traced.patchesTraced;
@@ -124,11 +159,16 @@ void WavefrontTransport::runCpu(const TransportInputsCpu& in) {
     stats_.splitsRefused = traced.splitsRefused;
     stats_.particlesTorn = traced.patchesTorn;
     stats_.particlesRemoved = traced.patchesRemoved;
+    stats_.rounds = traced.rounds;
 }
 
-void WavefrontTransport::runGpu(const TransportInputsGpu&) {
-    throw Error("render.light_transport.method \"wavefront\"",
-                "runs on the CPU twin only so far: render with --backend cpu");
+PhotonVolumes WavefrontTransport::volumes() const {
+    if (!device_.gpu || !volumesGpu_) return cpu_;
+    PhotonVolumes v = cpu_;
+    v.radiance = volumesGpu_->radiance();
+    v.direction = volumesGpu_->direction();
+    v.receiverMap = gpu_->receiverMap();
+    return v;
 }
 
 TransportOutputCpu WavefrontTransport::outputCpu() const {

@@ -6,7 +6,8 @@
 // fluence and mean-direction volumes (render/transport/wavefront/wavefront_tracing.h).
 //
 // Settings: render.light_transport.wavefront (docs/scene-format.md#renderlight_transportwavefront).
-// CPU twin only for now: a GPU run says so in one line (docs/methods.md).
+// On the GPU (wavefront_tracing_gpu.h) and the CPU twin, in the same rounds.
+#include <memory>
 #include <string>
 
 #include "core/json_reader.h"
@@ -15,6 +16,9 @@
 #include "render/transport/wavefront/wavefront_tracing.h"
 
 namespace eikon {
+
+class DepositVolumesGpu;
+class WavefrontTracerGpu;
 
 struct WavefrontTransportSettings {
     WavefrontSettings trace;
@@ -30,6 +34,7 @@ const std::vector<std::string>& wavefrontIntegratorNames();
 class WavefrontTransport final : public LightTransport {
 public:
     WavefrontTransport(WavefrontTransportSettings settings, TransportDevice device);
+    ~WavefrontTransport() override;
 
     std::string name() const override { return "wavefront"; }
     TransportNeeds needs() const override;
@@ -39,7 +44,7 @@ public:
     void runCpu(const TransportInputsCpu& in) override;
     void runGpu(const TransportInputsGpu& in) override;
     TransportOutputCpu outputCpu() const override;
-    void bindGpu() const override {}
+    void bindGpu() const override;
     TransportStats stats() const override { return stats_; }
     std::vector<std::string> stages() const override { return {"wavefront", "smooth"}; }
     std::optional<EnergyBalance> energy() const override;
@@ -47,14 +52,19 @@ public:
     // settings): about a quarter of the patches where the wavefront spreads.
     std::string previewPatch() const override;
 
-    // The smoothed volumes and totals of the last run, for tests.
-    const PhotonVolumes& volumes() const { return cpu_; }
+    // The smoothed volumes and totals of the last run (a GPU run's read back), for tests.
+    PhotonVolumes volumes() const;
 
 private:
+    // The counts and energy account of a trace, for stats() and energy().
+    void setResult(const WavefrontResultCpu& traced);
+
     WavefrontTransportSettings settings_;
     TransportDevice device_;
-    PhotonVolumes cpu_;
+    PhotonVolumes cpu_;  // a GPU run: its counts and totals alone
     TransportStats stats_;
+    std::unique_ptr<WavefrontTracerGpu> gpu_;
+    std::unique_ptr<DepositVolumesGpu> volumesGpu_;
 };
 
 }  // namespace eikon
