@@ -7,12 +7,42 @@
 #include "core/error.h"
 #include "render/gpu_timer.h"
 #include "render/gpu_transfer.h"
+#include "render/receiver_map.h"
 #include "render/shader_program.h"
 #include "render/smoothing.h"
+#include "render/transport/fixed_point.h"
 #include "render/volume_textures.h"
 #include "shaders/shared/bindings.h"
 
 namespace eikon {
+
+void readFixedDeposits(unsigned buffer, glm::ivec3 res, const glm::dvec4& scale,
+                       std::vector<glm::vec4>& radiance, std::vector<glm::vec4>& direction) {
+    constexpr size_t kWords = 12;  // 6 sums of (low, high) words a voxel
+    const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
+    const std::vector<unsigned> words = readStorageWords(buffer, 0, voxels * kWords);
+    radiance.assign(voxels, glm::vec4(0.0f));
+    direction.assign(voxels, glm::vec4(0.0f));
+    for (size_t i = 0; i < voxels; ++i) {
+        const unsigned* cell = &words[i * kWords];
+        for (int c = 0; c < 3; ++c) {
+            radiance[i][c] = float(fromFixedPoint(joinFixedWords(cell + 2 * c), scale[c]));
+            direction[i][c] = float(fromFixedPoint(joinFixedWords(cell + 6 + 2 * c), scale.w));
+        }
+    }
+}
+
+std::vector<glm::vec4> readFixedReceiverMap(unsigned buffer, const shared::GpuViewParams& params,
+                                            const glm::dvec3& e) {
+    const size_t sums = 3 * receiverMapTexels(params);
+    const std::vector<unsigned> words = readStorageWords(buffer, 0, 2 * sums);
+    std::vector<int64_t> fixed(sums);
+    for (size_t i = 0; i < sums; ++i) fixed[i] = joinFixedWords(&words[2 * i]);
+    return receiverMapFromFixed(
+        params, fixed,
+        glm::dvec3(fixedPointScaleFor(e.x, 1.0), fixedPointScaleFor(e.y, 1.0),
+                   fixedPointScaleFor(e.z, 1.0)));
+}
 
 DepositVolumesGpu::DepositVolumesGpu()
     : smoother_(std::make_unique<VolumeSmootherGpu>()),

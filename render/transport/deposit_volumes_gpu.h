@@ -9,7 +9,19 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "shaders/shared/gpu_types.h"
+
 namespace eikon {
+
+// Reads back a trace's fixed-point deposits (6 int64 per voxel of resolution `res` as (low, high)
+// words, shaders/particle_deposits.glsl) and converts them as the CPU twin does (FixedDepositsCpu
+// readVolumes): radiance rgb and the weighted direction xyz per voxel.
+void readFixedDeposits(unsigned buffer, glm::ivec3 res, const glm::dvec4& scale,
+                       std::vector<glm::vec4>& radiance, std::vector<glm::vec4>& direction);
+// Reads back a trace's receiver map sums (3 int64 per texel) and converts them as the twin does
+// (render/receiver_map.h), at the totals' scales of the `emitted` power.
+std::vector<glm::vec4> readFixedReceiverMap(unsigned buffer, const shared::GpuViewParams& params,
+                                            const glm::dvec3& emitted);
 
 class GpuStageTimer;
 class ShaderProgram;

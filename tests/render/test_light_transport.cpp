@@ -69,6 +69,19 @@ Failure failureOf(const std::string& text) {
     return {};
 }
 
+// The largest |a − b| of two pictures' colour channels; largest: b's largest channel.
+double largestDifference(const eikon::Image& a, const eikon::Image& b, double& largest) {
+    double difference = 0.0;
+    largest = 0.0;
+    for (size_t i = 0; i < b.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            largest = std::max(largest, double(b.pixels[i][c]));
+            difference =
+                std::max(difference, std::abs(double(a.pixels[i][c]) - double(b.pixels[i][c])));
+        }
+    return difference;
+}
+
 }  // namespace
 
 TEST_CASE("render.light_transport.method: auto picks photons where light bends and shows",
@@ -342,13 +355,8 @@ TEST_CASE(
             CHECK(g.particlesSplit == c.particlesSplit);
             CHECK(g.rounds == c.rounds);
             REQUIRE(gpuImage.pixels.size() == cpuImage.pixels.size());
-            double largest = 0.0, difference = 0.0;
-            for (size_t i = 0; i < cpuImage.pixels.size(); ++i)
-                for (int c = 0; c < 3; ++c) {
-                    largest = std::max(largest, double(cpuImage.pixels[i][c]));
-                    difference = std::max(difference, std::abs(double(gpuImage.pixels[i][c]) -
-                                                               double(cpuImage.pixels[i][c])));
-                }
+            double largest = 0.0;
+            const double difference = largestDifference(gpuImage, cpuImage, largest);
             INFO("max |GPU - CPU| " << difference << " of an image max " << largest);
             REQUIRE(largest > 0.01);
             // The trace's deposits are the twin's bits for a directional light
@@ -422,13 +430,8 @@ TEST_CASE("the plane sweep's settings: errors at the pointer, each in its cache 
             CHECK(gpu.transportRuns("plane_sweep") == 1);
             CHECK(gpu.lightTransport().stats().steps > 0);
             REQUIRE(gpuImage.pixels.size() == cpuImage.pixels.size());
-            double largest = 0.0, difference = 0.0;
-            for (size_t i = 0; i < cpuImage.pixels.size(); ++i)
-                for (int c = 0; c < 3; ++c) {
-                    largest = std::max(largest, double(cpuImage.pixels[i][c]));
-                    difference = std::max(difference, std::abs(double(gpuImage.pixels[i][c]) -
-                                                               double(cpuImage.pixels[i][c])));
-                }
+            double largest = 0.0;
+            const double difference = largestDifference(gpuImage, cpuImage, largest);
             INFO("max |GPU - CPU| " << difference << " of an image max " << largest);
             REQUIRE(largest > 0.01);
             // The sweep's volumes and maps are the same bits (test_plane_sweep_gpu.cpp); the

@@ -12,6 +12,7 @@
 #include "render/receiver_map.h"
 #include "render/shader_program.h"
 #include "render/transport/channel_passes.h"
+#include "render/transport/deposit_volumes_gpu.h"
 #include "render/transport/fixed_point.h"
 #include "render/transport/photons/lights_missing_volume.h"
 #include "render/volume_kernels_cpu.h"
@@ -336,33 +337,13 @@ WavefrontResultCpu WavefrontTracerGpu::counts() const {
 }
 
 std::vector<glm::vec4> WavefrontTracerGpu::receiverMap() const {
-    const size_t sums = 3 * receiverMapTexels(params_);
-    const std::vector<GLuint> words = readStorageWords(receiverDeposits_, 0, 2 * sums);
-    std::vector<int64_t> fixed(sums);
-    for (size_t i = 0; i < sums; ++i) fixed[i] = joinFixedWords(&words[2 * i]);
-    const glm::dvec3 e = host_.totals.emitted;
-    return receiverMapFromFixed(
-        params_, fixed,
-        glm::dvec3(fixedPointScaleFor(e.x, 1.0), fixedPointScaleFor(e.y, 1.0),
-                   fixedPointScaleFor(e.z, 1.0)));
+    return readFixedReceiverMap(receiverDeposits_, params_, host_.totals.emitted);
 }
 
 WavefrontResultCpu WavefrontTracerGpu::download() const {
     WavefrontResultCpu r = counts();
     r.receiverMap = receiverMap();
-    const glm::ivec3 res = r.resolution;
-    const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
-    const std::vector<GLuint> words = readStorageWords(deposits_, 0, voxels * kDepositChannels * 2);
-    const glm::dvec4& scale = host_.fixedPointScale;
-    r.radiance.assign(voxels, glm::vec4(0.0f));
-    r.direction.assign(voxels, glm::vec4(0.0f));
-    for (size_t i = 0; i < voxels; ++i) {
-        const GLuint* cell = &words[i * kDepositChannels * 2];
-        for (int c = 0; c < 3; ++c) {
-            r.radiance[i][c] = float(fromFixedPoint(joinFixedWords(cell + 2 * c), scale[c]));
-            r.direction[i][c] = float(fromFixedPoint(joinFixedWords(cell + 6 + 2 * c), scale.w));
-        }
-    }
+    readFixedDeposits(deposits_, r.resolution, host_.fixedPointScale, r.radiance, r.direction);
     return r;
 }
 
