@@ -19,15 +19,25 @@ trap 'rm -rf "$OUT"' EXIT
 
 for scene in $SCENES; do
     /usr/bin/python3 - "$scene" "$OUT" <<'PY'
-import json, sys
+import json, os, sys
 name, out = sys.argv[1:3]
-scene = json.load(open(f"data/scenes/{name}.json"))
+folder = os.path.abspath("data/scenes")
+scene = json.load(open(f"{folder}/{name}.json"))
 scene.setdefault("render", {})["light_transport"] = {"method": "wavefront"}
-json.dump(scene, open(f"{out}/{name}.json", "w"))
+def absolute(node):  # the scene's files (meshes, VDBs, environments) from its own folder
+    if isinstance(node, dict):
+        for key, value in node.items():
+            if key in ("file", "path") and isinstance(value, str) and not os.path.isabs(value):
+                node[key] = os.path.normpath(os.path.join(folder, value))
+            else:
+                absolute(value)
+    elif isinstance(node, list):
+        for value in node:
+            absolute(value)
+absolute(scene)
+os.makedirs(f"{out}/scenes", exist_ok=True)
+json.dump(scene, open(f"{out}/scenes/{name}.wavefront.json", "w"))
 PY
-    # Relative paths in the scene resolve from its folder: run from data/scenes.
-    cp -r data/scenes/. "$OUT/scenes" 2> /dev/null || true
-    cp "$OUT/$scene.json" "$OUT/scenes/$scene.wavefront.json"
 done
 
 row() {  # scene backend
