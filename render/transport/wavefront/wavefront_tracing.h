@@ -90,6 +90,22 @@ struct WavefrontPlan {
 };
 WavefrontPlan planWavefronts(const ViewSetup& setup, const WavefrontSettings& settings);
 
+// What every patch's rounds read (shared/wavefront.h patchRound), derived from the settings
+// once, the same for both backends.
+struct WavefrontRoundSettings {
+    int maxSteps = 0;
+    float splitVoxels = 1.0f;
+    int maxLevel = 0;
+    float dt = 0.0f;
+    int integrator = EK_WAVEFRONT_RK4;
+    int atCaustic = EK_WAVEFRONT_KEEP;
+    int samples = 1;
+    float surfaceSlope = 0.0f;  // 0: no Fresnel (also where no material has a sharp surface)
+};
+WavefrontRoundSettings wavefrontRoundSettings(const ViewSetup& setup,
+                                              const WavefrontSettings& settings,
+                                              const WavefrontPlan& plan);
+
 // The patches each of a pass's `startingPatches` may make, itself included
 // (shared/wavefront_rounds.h): max_patches shared equally, at least 1.
 int64_t wavefrontRootBudget(const WavefrontSettings& settings, int64_t startingPatches);

@@ -93,6 +93,21 @@ int64_t wavefrontRootBudget(const WavefrontSettings& settings, int64_t startingP
         1, int64_t(std::max(settings.maxPatches, 1)) / std::max<int64_t>(startingPatches, 1));
 }
 
+WavefrontRoundSettings wavefrontRoundSettings(const ViewSetup& setup,
+                                              const WavefrontSettings& settings,
+                                              const WavefrontPlan& plan) {
+    WavefrontRoundSettings r;
+    r.maxSteps = plan.maxSteps;
+    r.splitVoxels = std::max(settings.splitVoxels, 1e-3f);
+    r.maxLevel = std::max(settings.maxLevel, 0);
+    r.dt = plan.dt;
+    r.integrator = static_cast<int>(settings.integrator);
+    r.atCaustic = settings.atCaustic;
+    r.samples = std::max(settings.depositSamples, 1);
+    r.surfaceSlope = wavefrontSurfaceSlope(setup, settings);
+    return r;
+}
+
 float wavefrontSurfaceSlope(const ViewSetup& setup, const WavefrontSettings& settings) {
     shared::WavefrontKernelCpu kernel{{{setup.params}}};
     return kernel.anySurfaces() ? std::max(settings.surfaceSlope, 0.0f) : 0.0f;
@@ -124,32 +139,6 @@ std::vector<WavefrontPass> wavefrontPasses(const ViewSetup& setup,
     std::vector<WavefrontPass> passes;
     for (int c = 0; c < 3; ++c) passes.push_back({wavefrontChannelParams(setup, c), gradients[c]});
     return passes;
-}
-
-// The settings every patch's rounds read, derived once.
-struct WavefrontRoundSettings {
-    int maxSteps = 0;
-    float splitVoxels = 1.0f;
-    int maxLevel = 0;
-    float dt = 0.0f;
-    int integrator = EK_WAVEFRONT_RK4;
-    int atCaustic = EK_WAVEFRONT_KEEP;
-    int samples = 1;
-    float surfaceSlope = 0.0f;  // 0: no Fresnel (also where no material has a sharp surface)
-};
-
-WavefrontRoundSettings roundSettings(const ViewSetup& setup, const WavefrontSettings& settings,
-                                     const WavefrontPlan& plan) {
-    WavefrontRoundSettings r;
-    r.maxSteps = plan.maxSteps;
-    r.splitVoxels = std::max(settings.splitVoxels, 1e-3f);
-    r.maxLevel = std::max(settings.maxLevel, 0);
-    r.dt = plan.dt;
-    r.integrator = static_cast<int>(settings.integrator);
-    r.atCaustic = settings.atCaustic;
-    r.samples = std::max(settings.depositSamples, 1);
-    r.surfaceSlope = wavefrontSurfaceSlope(setup, settings);
-    return r;
 }
 
 // One round of one patch (patchRound), adding its steps and orientation flips.
@@ -238,7 +227,7 @@ WavefrontResultCpu traceWavefrontsCpu(const ViewSetup& setup,
         if (state == EK_PATCH_TORN) counters.torn.fetch_add(1, std::memory_order_relaxed);
     };
 
-    const WavefrontRoundSettings round = roundSettings(setup, settings, plan);
+    const WavefrontRoundSettings round = wavefrontRoundSettings(setup, settings, plan);
 
     // Pass after pass, its patches in rounds (shared/wavefront_rounds.h), as the GPU traces them.
     std::vector<shared::GpuWavefrontPatch> list, next;

@@ -134,10 +134,10 @@ void WavefrontTracerGpu::trace(const ViewSetup& setup, VolumeTextures& fields,
     largestList_ = 0;
     std::vector<std::vector<shared::GpuWavefrontEntry>> active;
     generate(setup, plan, settings, gradients, active);
-    const float surfaceSlope = wavefrontSurfaceSlope(setup, settings);
+    const WavefrontRoundSettings round = wavefrontRoundSettings(setup, settings, plan);
     for (size_t k = 0; k < gradients.size(); ++k) {
         bindPass(int(k), gradients[k]);
-        tracePass(plan, settings, active[k], surfaceSlope);
+        tracePass(round, settings, active[k]);
     }
     bindStorage(EK_SSBO_VIEW_PARAMS, boundParams_);
     if (timer) timer->end();
@@ -214,9 +214,9 @@ void WavefrontTracerGpu::sumWords(size_t count, bool requests, int source, int t
     scanStep(kStageTotals, count);
 }
 
-void WavefrontTracerGpu::tracePass(const WavefrontPlan& plan, const WavefrontSettings& settings,
-                                   std::vector<shared::GpuWavefrontEntry> roots,
-                                   float surfaceSlope) {
+void WavefrontTracerGpu::tracePass(const WavefrontRoundSettings& round,
+                                   const WavefrontSettings& settings,
+                                   std::vector<shared::GpuWavefrontEntry> roots) {
     size_t count = roots.size();
     if (count == 0) return;
     for (size_t r = 0; r < count; ++r) roots[r].tally.root = glm::ivec4(int(r), 0, 0, 0);
@@ -240,14 +240,14 @@ void WavefrontTracerGpu::tracePass(const WavefrontPlan& plan, const WavefrontSet
     const glm::dvec4& s = host_.fixedPointScale;
     for (ShaderProgram* program : {trace_.get(), scatter_.get()}) {
         program->use();
-        program->setInt("maxSteps", plan.maxSteps);
-        program->setFloat("splitVoxels", std::max(settings.splitVoxels, 1e-3f));
-        program->setInt("maxLevel", std::max(settings.maxLevel, 0));
-        program->setFloat("dt", plan.dt);
-        program->setInt("integrator", static_cast<int>(settings.integrator));
-        program->setInt("atCaustic", settings.atCaustic);
-        program->setInt("samples", std::max(settings.depositSamples, 1));
-        program->setFloat("surfaceSlope", surfaceSlope);
+        program->setInt("maxSteps", round.maxSteps);
+        program->setFloat("splitVoxels", round.splitVoxels);
+        program->setInt("maxLevel", round.maxLevel);
+        program->setFloat("dt", round.dt);
+        program->setInt("integrator", round.integrator);
+        program->setInt("atCaustic", round.atCaustic);
+        program->setInt("samples", round.samples);
+        program->setFloat("surfaceSlope", round.surfaceSlope);
         glUniform4d(program->uniformLocation("depositScale"), s.x, s.y, s.z, s.w);
         glUniform3d(program->uniformLocation("totalScale"), fixedPointScaleFor(e.x, 1.0),
                     fixedPointScaleFor(e.y, 1.0), fixedPointScaleFor(e.z, 1.0));
@@ -257,7 +257,7 @@ void WavefrontTracerGpu::tracePass(const WavefrontPlan& plan, const WavefrontSet
 
     // A lineage takes at most maxSteps steps, maxLevel splits and one refusal, each round at
     // least one of them or a full round of steps: past this something is wrong, never a hang.
-    const int roundCap = plan.maxSteps / EK_WAVE_ROUND_STEPS + std::max(settings.maxLevel, 0) + 4;
+    const int roundCap = round.maxSteps / EK_WAVE_ROUND_STEPS + round.maxLevel + 4;
     int in = 0;
     for (int round = 0; count > 0; ++round) {
         if (round > roundCap)

@@ -39,7 +39,7 @@ public:
     // The last trace's results in the twin's structure and units (reads back the deposits and
     // totals); `patches` stays empty.
     WavefrontResultCpu download() const;
-    // The last trace's counts and energy account alone (reads back the totals: 200 bytes).
+    // The last trace's counts and energy account alone (reads back the totals: 192 bytes).
     WavefrontResultCpu counts() const;
     // The last trace's receiver map (render/receiver_map.h; reads back its fixed-point sums).
     std::vector<glm::vec4> receiverMap() const;
@@ -58,8 +58,8 @@ private:
                   const WavefrontSettings& settings, const std::vector<unsigned>& gradients,
                   std::vector<std::vector<shared::GpuWavefrontEntry>>& active);
     // One pass's rounds, from its active starting patches.
-    void tracePass(const WavefrontPlan& plan, const WavefrontSettings& settings,
-                   std::vector<shared::GpuWavefrontEntry> roots, float surfaceSlope);
+    void tracePass(const WavefrontRoundSettings& round, const WavefrontSettings& settings,
+                   std::vector<shared::GpuWavefrontEntry> roots);
     // wavefront_scan.comp's stages (the numbers of its EK_WAVE_STAGE_*) over a list of `count`.
     static constexpr int kStageBlocks = 0, kStageTotals = 1, kStageFirsts = 2, kStageGrants = 3;
     void scanStep(int stage, size_t count) const;

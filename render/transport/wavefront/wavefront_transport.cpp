@@ -137,7 +137,7 @@ void WavefrontTransport::runGpu(const TransportInputsGpu& in) {
     volumesGpu_->compute(glm::ivec3(p.resolution.x, p.resolution.y, p.resolution.z),
                          gpu_->depositBuffer(), gpu_->fixedPointScale(), gpu_->receiverMap(),
                          in.timer);
-    // The counts and the energy account: 200 bytes read back, for --stats and the benches.
+    // The counts and the energy account: 192 bytes read back, for --stats and the benches.
     setResult(gpu_->counts());
 }
 
