@@ -26,7 +26,9 @@ vec4 sampleVolume(int slot, vec3 indexPos) {
     return filterVolume(slot, indexPos);
 }
 #else
-vec4 sampleVolume(int slot, vec3 indexPos) {
+// Forced inline in the CPU twin, as fetchVolume (volume_slots.h): the slot is a constant at most
+// calls, and its branch then folds away.
+EK_FORCE_INLINE vec4 sampleVolume(int slot, vec3 indexPos) {
     const ivec3 last = volumeResolution() - ivec3(1);
     const vec3 q = indexPos - vec3(0.5f);
     const vec3 base = floor(q);

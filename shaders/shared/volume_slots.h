@@ -14,7 +14,10 @@
 // and, with EK_HARDWARE_TRILINEAR (GLSL only: the texture unit filters), the same five as
 // filterFieldVolume(int, vec3 indexPos) ... filterFluenceDirectionVolume(vec3 indexPos).
 
-vec4 fetchVolume(int slot, ivec3 voxel) {
+// Forced inline (EK_FORCE_INLINE; nothing in GLSL): GCC kept it out of line in the CPU twin, a
+// call for each of a sample's eight corners; inlined, the slot's branch leaves the corner loop and
+// the twin's view pass took half the time (BENCHMARKS.md, "Inlined sampling").
+EK_FORCE_INLINE vec4 fetchVolume(int slot, ivec3 voxel) {
     if (slot < EK_MAX_MATERIALS) return fetchFieldVoxel(slot, voxel);
     if (slot == EK_GRADIENT_SLOT) return fetchGradientVoxel(voxel);
     if (slot == EK_FLUENCE_SLOT) return fetchFluenceVoxel(voxel);
