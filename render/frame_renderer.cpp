@@ -30,6 +30,13 @@ bool useHardwareTrilinear(const GlContext& gl) {
     return isSoftwareRenderer(gl.rendererName());
 }
 
+// The CPU twin's view steps through empty space without sampling it (render/empty_bricks.h), to
+// the same bits; EIKON_SKIP_EMPTY_SPACE=0 takes every step in full, to measure what that gains.
+bool skipEmptySpace() {
+    const char* env = std::getenv("EIKON_SKIP_EMPTY_SPACE");
+    return !(env && std::string(env) == "0");
+}
+
 }  // namespace
 
 FrameRenderer::FrameRenderer(const Scene& scene, Backend backend, GlContext* context)
@@ -320,7 +327,7 @@ Image FrameRenderer::render(int frame) {
         Image image = renderViewCpu(setup, slotGrids,
                                     transportActive ? used->outputCpu() : TransportOutputCpu{},
                                     curved ? gradientCpu_ : noGradient, &environment,
-                                    disperses ? &channelGradientsCpu_ : nullptr);
+                                    disperses ? &channelGradientsCpu_ : nullptr, skipEmptySpace());
         timer_->end();
         return image;
     }

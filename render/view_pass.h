@@ -34,10 +34,14 @@ struct ViewDispersionGpu {
 // when environmentType(params) asks for one. `channelGradients`: under dispersion
 // (dispersesView(setup) with curved rays) the red and blue channels' ∇n volumes, `gradient` being
 // the green one's; each channel is then traced on its own (three rays a pixel).
+// `skipEmptySpace`: steps through empty bricks are taken without sampling them
+// (render/empty_bricks.h), with the same result to the bit; false takes every step in full (to
+// measure what skipping gains).
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient = {},
                     const Image* environment = nullptr,
-                    const ChannelGradientsCpu* channelGradients = nullptr);
+                    const ChannelGradientsCpu* channelGradients = nullptr,
+                    bool skipEmptySpace = true);
 
 // GPU pass; needs a current GL 4.3 context and the frame's parameters in the ParamsBuffer. Field
 // textures come from `textures` in slot order.

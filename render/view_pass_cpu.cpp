@@ -2,6 +2,7 @@
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
+#include "render/empty_bricks.h"
 #include "render/receiver_map.h"
 #include "render/view_pass.h"
 #include "render/volume_kernels_cpu.h"
@@ -10,7 +11,8 @@ namespace eikon {
 
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient,
-                    const Image* environment, const ChannelGradientsCpu* channelGradients) {
+                    const Image* environment, const ChannelGradientsCpu* channelGradients,
+                    bool skipEmptySpace) {
     const shared::GpuViewParams& p = setup.params;
     if (slotGrids.size() != setup.slotFields.size())
         throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
@@ -42,8 +44,18 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
             throw Error("view pass (CPU)",
                         "field '" + slotGrids[s]->field + "' was resampled on a different volume");
     }
-    // Every kernel reads the same volumes; under dispersion each channel's its own ∇n.
-    const auto attach = [&](shared::ViewKernelCpu& kernel, const std::vector<glm::vec4>& grad) {
+    std::vector<const float*> fields;
+    for (const DenseGrid* grid : slotGrids) fields.push_back(grid->values.data());
+    // Every kernel reads the same volumes; under dispersion each channel's its own ∇n, and so has
+    // its own empty bricks.
+    const auto attach = [&](shared::ViewKernelCpu& kernel, const std::vector<glm::vec4>& grad,
+                            EmptyBricks& bricks) {
+        if (skipEmptySpace) {
+            bricks = findEmptyBricks(glm::ivec3(p.resolution), fields,
+                                     shared::curvedRays(p) ? grad.data() : nullptr);
+            kernel.emptyBricks = bricks.empty.data();
+            kernel.emptyBrickCount = bricks.count;
+        }
         for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
             kernel.lights[l] = light.lightTransmittance[l];
         if (shared::curvedRays(p)) kernel.gradient = grad.data();
@@ -66,7 +78,8 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     };
     if (!dispersed) {
         shared::ViewKernelCpu kernel{{p}};
-        attach(kernel, gradient);
+        EmptyBricks bricks;
+        attach(kernel, gradient, bricks);
         forEachRow([&](int y) {
             for (int x = 0; x < image.width; ++x) image.at(x, y) = kernel.renderPixel(x, y);
         });
@@ -78,9 +91,10 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     const shared::GpuViewParams green = channelViewParams(setup, 1);
     const shared::GpuViewParams blue = channelViewParams(setup, 2);
     shared::ViewKernelCpu kernels[3] = {{{red}}, {{green}}, {{blue}}};
-    attach(kernels[0], channelGradients->red);
-    attach(kernels[1], gradient);
-    attach(kernels[2], channelGradients->blue);
+    EmptyBricks bricks[3];
+    attach(kernels[0], channelGradients->red, bricks[0]);
+    attach(kernels[1], gradient, bricks[1]);
+    attach(kernels[2], channelGradients->blue, bricks[2]);
     forEachRow([&](int y) {
         for (int x = 0; x < image.width; ++x) {
             glm::vec4 pixel(0.0f);

@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "core/ray_integrator.h"
+#include "render/empty_bricks.h"
 
 #include "shaders/shared/gpu_types.h"
 #include "shaders/shared/material_index.h"  // at file scope: fresnel.h calls it
@@ -15,6 +16,9 @@
 // The lights' highlights on sharp surfaces (view_march.h): always compiled here, skipped at run
 // time where no material has them (the GPU compiles them only into a variant of its own).
 #define EK_SPECULAR
+// Steps through empty space without sampling it (view_march.h; render/empty_bricks.h): only here,
+// where the empty bricks are found. The GPU takes every step in full, with the same result.
+#define EK_SKIP_EMPTY_SPACE
 
 EK_NAMESPACE_BEGIN
 
@@ -120,6 +124,22 @@ struct ViewKernelCpu : VolumeAccessCpu {
         if (!deferredReceiverHit) return false;
         *deferredReceiverHit = ReceiverHit{r, x, front, weight};
         return true;
+    }
+
+    // The empty bricks (render/empty_bricks.h) the view may step through without sampling them;
+    // null: none, every step is taken in full.
+    const uint8_t* emptyBricks = nullptr;
+    ivec3 emptyBrickCount = ivec3(0);
+    // The index of the empty brick that holds volume index position p; −1 where that brick is not
+    // empty, or p is outside the volume (or NaN).
+    int emptyBrickAt(vec3 p) const {
+        if (!emptyBricks) return -1;
+        if (!(p.x >= 0.0f && p.y >= 0.0f && p.z >= 0.0f && p.x < float(params.resolution.x) &&
+              p.y < float(params.resolution.y) && p.z < float(params.resolution.z)))
+            return -1;
+        const ivec3 b = ivec3(p) >> kEmptyBrickShift;  // truncation is floor here: p ≥ 0
+        const int i = (b.z * emptyBrickCount.y + b.y) * emptyBrickCount.x + b.x;
+        return emptyBricks[i] ? i : -1;
     }
 
     // clang-format off

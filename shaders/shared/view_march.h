@@ -223,6 +223,46 @@ EK_FORCE_INLINE bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(
     return true;
 }
 
+#ifdef EK_SKIP_EMPTY_SPACE
+// Empty space (CPU twin only; render/empty_bricks.h): where the includer's
+// `int emptyBrickAt(vec3 indexPos)` finds the brick around a step empty (≥ 0: its index; −1: not
+// empty), every field is zero and ∇n is +0 for every sample the step takes. These two functions
+// give the full step's floats without taking those samples.
+
+// accumulateStep over a step where every field is zero: no κ, no source, so the radiance gains
+// transmittance × 0 × s = +0 and the transmittance keeps its value (× e^0 = × 1); the cut-off is
+// tested as accumulateStep tests it.
+bool accumulateEmptyStep(EK_INOUT(vec3) radiance, EK_INOUT(vec3) transmittance) {
+    radiance += vec3(0.0f);
+    if (max(max(transmittance.x, transmittance.y), transmittance.z) < minTransmittance(params)) {
+        transmittance = vec3(0.0f);
+        return false;
+    }
+    return true;
+}
+
+// rayAdvance's Störmer–Verlet step of length h from (x, v) where the force n∇n is +0 at its
+// midpoint: v gains dτ × 0 = +0, x moves straight. True, with next and vNext set, where the step
+// starts and ends in the same empty brick (its midpoint then lies in it too); false otherwise.
+bool emptyVerletStep(vec3 x, vec3 v, float h, EK_OUT(vec3) next, EK_OUT(vec3) vNext) {
+    next = x;
+    vNext = v;
+    if (viewIntegrator(params) != EK_RAY_VERLET) return false;
+    const int brick = emptyBrickAt(worldToVolumeIndex(x));
+    if (brick < 0) return false;
+    const float speed = length(v);  // rayStepStart's w for Verlet
+    if (!(speed > 1e-6f)) return false;
+    const float dtau = h / speed;
+    const vec3 xHalf = x + (0.5f * dtau) * v;
+    const vec3 vEnd = v + vec3(0.0f);
+    const vec3 xEnd = xHalf + (0.5f * dtau) * vEnd;
+    if (emptyBrickAt(worldToVolumeIndex(xEnd)) != brick) return false;
+    next = xEnd;
+    vNext = vEnd;
+    return true;
+}
+#endif
+
 // A reflection a view ray hands back to be traced through the volume: from origin (xyz) along
 // unit dir (xyz) with momentum dir × n (n in dir.w), seen with weight (rgb; 0: none).
 struct KeptReflection {
@@ -306,9 +346,16 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
     for (; r.steps < r.maxSteps; ++r.steps) {
         vec3 next = r.x;
         vec3 vNext = r.v;
+#ifdef EK_SKIP_EMPTY_SPACE
+        const bool empty = emptyVerletStep(r.x, r.v, r.h, next, vNext);
+        if (!empty && !rayAdvance(viewIntegrator(params), next, vNext, r.h,
+                                  rayStepStart(viewIntegrator(params), r.x, r.v)))
+            break;  // a degenerate n; nothing more to trace
+#else
         if (!rayAdvance(viewIntegrator(params), next, vNext, r.h,
                         rayStepStart(viewIntegrator(params), r.x, r.v)))
             break;  // a degenerate n; nothing more to trace
+#endif
         const vec3 delta = next - r.x;
         float s = length(delta);
         if (!(s > 0.0f)) break;  // a degenerate n; nothing more to trace
@@ -336,8 +383,14 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
                 status = EK_RAY_WAITS;
                 break;
             }
+#ifdef EK_SKIP_EMPTY_SPACE
+            if (empty ? !accumulateEmptyStep(r.radiance, r.transmittance)
+                      : !accumulateStep(mid, midIndex, segmentDir, s, r.radiance, r.transmittance))
+                r.shade = false;  // opaque: keep tracing only for the exit point
+#else
             if (!accumulateStep(mid, midIndex, segmentDir, s, r.radiance, r.transmittance))
                 r.shade = false;  // opaque: keep tracing only for the exit point
+#endif
         }
         if (r.shade && r.surfaceSlope > 0.0f && s > 0.0f) {
             const vec3 q = worldToVolumeIndex(next);
@@ -479,6 +532,15 @@ int straightRayAdvance(EK_INOUT(StraightRay) r) {
             status = EK_RAY_WAITS;
             break;
         }
+#ifdef EK_SKIP_EMPTY_SPACE
+        if (receiver < 0 && emptyBrickAt(p) >= 0) {  // the step's one sample is in empty space
+            if (!accumulateEmptyStep(r.radiance, r.transmittance)) {
+                ++r.step;
+                break;
+            }
+            continue;
+        }
+#endif
         if (!accumulateStep(x, p, r.dir, t1 - t0, r.radiance, r.transmittance)) {
             ++r.step;
             break;
