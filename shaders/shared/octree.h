@@ -112,8 +112,15 @@ vec4 pyramidNodeFromChildren(ivec3 res, int level, ivec3 node) {
 // that κ_tol's optical depth is measured with.
 vec4 octreeLabel(ivec3 res, ivec3 voxel, float epsilon, float epsilonPrime, float stepLimit,
                  float minStep, float kappaTolerance, float voxelLength) {
-    for (int level = pyramidLevelCount(res) - 1; level >= 1; --level) {
-        const vec4 r = fetchPyramid(pyramidNodeIndex(res, level, voxel / ivec3(1 << level)));
+    const int top = pyramidLevelCount(res) - 1;
+    // The first node of each level, walked down from past the top: pyramidNodeIndex would sum
+    // the levels below anew at every level (half of the CPU twin's octree stage at 48×64×48).
+    int offset = pyramidLevelOffset(res, top) + pyramidNodeCount(res, top);
+    for (int level = top; level >= 1; --level) {
+        offset -= pyramidNodeCount(res, level);
+        const ivec3 size = pyramidLevelSize(res, level);
+        const ivec3 node = voxel / ivec3(1 << level);
+        const vec4 r = fetchPyramid(offset + (node.z * size.y + node.y) * size.x + node.x);
         if (kappaTolerance > 0.0f &&
             !((r.w - r.z) * (float(1 << level) * voxelLength) < kappaTolerance))
             continue;
