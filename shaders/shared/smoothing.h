@@ -20,3 +20,21 @@ vec4 smoothedVoxel(ivec3 v, ivec3 res) {
             }
     return sum / weightSum;
 }
+
+#ifdef __cplusplus
+// The CPU twin's shortcut for a voxel whose 26 neighbours all exist (none on a face):
+// smoothedVoxel's sums in the same order, without its bounds tests, so the same floats; the loops
+// unroll and the weights fold (weightSum is 64 exactly either way).
+vec4 smoothedInteriorVoxel(ivec3 v) {
+    vec4 sum = vec4(0.0f);
+    float weightSum = 0.0f;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const float w = float((2 - abs(dx)) * (2 - abs(dy)) * (2 - abs(dz)));
+                sum += w * fetchUnsmoothed(ivec3(v.x + dx, v.y + dy, v.z + dz));
+                weightSum += w;
+            }
+    return sum / weightSum;
+}
+#endif
