@@ -1,43 +1,13 @@
 #include "render/transport/photons/fixed_deposits_cpu.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <cstring>
-#include <new>
 
-#include <sys/mman.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "render/receiver_map.h"
 
 namespace eikon {
-namespace {
-
-// The deposit volume, zeroed, on 2 MiB pages where the kernel gives them (transparent huge pages
-// on request: `madvise` is Debian's default). Zeroing it on 4 KiB pages took 31-46 ms at 64³
-// (12.6 MB, 3,000 page faults in this VM), a quarter of the photon stage at 64 photons a side; a
-// huge page is one fault. Without them (another kernel setting) it is the same memory on small
-// pages.
-std::atomic<int64_t>* allocateZeroedDeposits(size_t count) {
-    static_assert(std::atomic<int64_t>::is_always_lock_free &&
-                  sizeof(std::atomic<int64_t>) == sizeof(int64_t));
-    constexpr size_t kHugePage = size_t(2) << 20;
-    const size_t bytes = std::max<size_t>(count * sizeof(std::atomic<int64_t>), 1);
-    const size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-    void* memory = std::aligned_alloc(kHugePage, rounded);
-    if (!memory) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-    madvise(memory, rounded, MADV_HUGEPAGE);  // advice: refused, the small pages still work
-#endif
-    std::memset(memory, 0, bytes);  // zero bits are a zero std::atomic<int64_t> (lock-free)
-    return static_cast<std::atomic<int64_t>*>(memory);
-}
-
-}  // namespace
-
-void FixedDepositsCpu::FreeDeposits::operator()(std::atomic<int64_t>* p) const {
-    std::free(p);
-}
-
 FixedDepositsCpu::FixedDepositsCpu(const ViewSetup& setup, glm::dvec3 emitted) {
     const glm::ivec3 res(setup.params.resolution);
     voxels_ = size_t(res.x) * size_t(res.y) * size_t(res.z);
@@ -51,7 +21,7 @@ FixedDepositsCpu::FixedDepositsCpu(const ViewSetup& setup, glm::dvec3 emitted) {
     totalScale_ = glm::dvec3(fixedPointScaleFor(emitted.x, 1.0), fixedPointScaleFor(emitted.y, 1.0),
                              fixedPointScaleFor(emitted.z, 1.0));
     const size_t depositCount = voxels_ * size_t(shared::PhotonKernelCpu::kDepositChannels);
-    deposits_.reset(allocateZeroedDeposits(depositCount));
+    deposits_ = std::make_unique<DepositBuffersCpu>(depositCount);
     receiverSums_ = 3 * receiverMapTexels(setup.params);
     receiverDeposits_.reset(new std::atomic<int64_t>[std::max<size_t>(receiverSums_, 1)]);
     for (size_t i = 0; i < receiverSums_; ++i)
@@ -116,14 +86,16 @@ void FixedDepositsCpu::readVolumes(std::vector<glm::vec4>& radiance,
                                    std::vector<glm::vec4>& direction) const {
     radiance.assign(voxels_, glm::vec4(0.0f));
     direction.assign(voxels_, glm::vec4(0.0f));
-    for (size_t i = 0; i < voxels_; ++i) {
-        const std::atomic<int64_t>* cell =
-            &deposits_[i * shared::PhotonKernelCpu::kDepositChannels];
-        for (int c = 0; c < 3; ++c) {
-            radiance[i][c] = float(fromFixedPoint(cell[c].load(), scale_[c]));
-            direction[i][c] = float(fromFixedPoint(cell[3 + c].load(), scale_.w));
-        }
-    }
+    constexpr size_t kChannels = shared::PhotonKernelCpu::kDepositChannels;
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, voxels_, 4096), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t i = r.begin(); i != r.end(); ++i)
+                for (int c = 0; c < 3; ++c) {
+                    const size_t cell = i * kChannels;
+                    radiance[i][c] = float(fromFixedPoint(deposits_->sum(cell + c), scale_[c]));
+                    direction[i][c] = float(fromFixedPoint(deposits_->sum(cell + 3 + c), scale_.w));
+                }
+        });
 }
 
 }  // namespace eikon

@@ -1,8 +1,8 @@
 #pragma once
-// The accumulators of a CPU particle trace (photons, wavefront patches): the deposit volume
-// (PhotonKernelCpu::kDepositChannels per voxel) and the receiver maps' sums as 64-bit integers,
-// zeroed, with fixed-point scales from the emitted power (render/transport/fixed_point.h), the
-// energy totals, and their read-out as floats.
+// The accumulators of a CPU particle trace (photons, wavefront patches): the deposit volumes
+// (PhotonKernelCpu::kDepositChannels per voxel; one per thread, DepositBuffersCpu) and the
+// receiver maps' sums as 64-bit integers, zeroed, with fixed-point scales from the emitted power
+// (render/transport/fixed_point.h), the energy totals, and their read-out as floats.
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -49,10 +49,7 @@ private:
     size_t receiverSums_ = 0;
     glm::dvec4 scale_{0.0};
     glm::dvec3 totalScale_{0.0};
-    struct FreeDeposits {
-        void operator()(std::atomic<int64_t>* p) const;
-    };
-    std::unique_ptr<std::atomic<int64_t>[], FreeDeposits> deposits_;
+    std::unique_ptr<DepositBuffersCpu> deposits_;
     std::unique_ptr<std::atomic<int64_t>[]> receiverDeposits_;
     FixedTotals totals_;
 };

@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "render/transport/fixed_point.h"
+#include "render/transport/photons/deposit_buffers_cpu.h"
 // First: the photon types at namespace scope, before photons.h is included in the kernel below.
 #include "render/transport/photons/photon_tracing.h"
 #include "render/volume_kernels_cpu.h"
@@ -22,7 +23,7 @@ EK_NAMESPACE_BEGIN
 struct PhotonKernelCpu : VolumeAccessCpu {
     static constexpr int kDepositChannels = 6;
     const vec4* octree = nullptr;
-    std::atomic<int64_t>* deposits = nullptr;
+    ::eikon::DepositBuffersCpu* deposits = nullptr;
     dvec4 scale = dvec4(0.0);                          // rgb: flux·length channels; w: direction
     std::atomic<int64_t>* receiverDeposits = nullptr;  // 3 per receiver map texel: r, g, b
     dvec3 receiverScale = dvec3(0.0);                  // the totals' per-channel scales
@@ -36,12 +37,13 @@ struct PhotonKernelCpu : VolumeAccessCpu {
     }
 
     void depositVoxel(ivec3 v, vec3 fluxLength, vec3 weightedDir) const {
-        std::atomic<int64_t>* cell = deposits + voxelIndex(v) * kDepositChannels;
-        // Integer addition commutes exactly: the sum is the same in any order, on any thread.
+        int64_t cell[kDepositChannels];
         for (int c = 0; c < 3; ++c) {
-            cell[c].fetch_add(toFixed(fluxLength[c], scale[c]), std::memory_order_relaxed);
-            cell[3 + c].fetch_add(toFixed(weightedDir[c], scale.w), std::memory_order_relaxed);
+            cell[c] = toFixed(fluxLength[c], scale[c]);
+            cell[3 + c] = toFixed(weightedDir[c], scale.w);
         }
+        // Integer addition commutes exactly: the sum is the same in any order, on any thread.
+        deposits->add(voxelIndex(v) * kDepositChannels, cell, kDepositChannels);
     }
 
     void depositReceiverTexel(int index, vec3 flux) const {
