@@ -1,4 +1,5 @@
 #include <tbb/blocked_range.h>
+#include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
 
 #include "core/error.h"
@@ -70,19 +71,22 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
             kernel.fields[s] = slotGrids[s]->values.data();
     };
     Image image(p.image.x, p.image.y);
-    const auto forEachRow = [&](const auto& row) {
-        tbb::parallel_for(tbb::blocked_range<int>(0, image.height),
-                          [&](const tbb::blocked_range<int>& r) {
-                              for (int y = r.begin(); y != r.end(); ++y) row(y);
-                          });
+    // In tiles of 8×8 pixels: neighbouring rays read the same voxels, so a tile finds most of
+    // them in the cache (rows of 640 did not: the view at 128³ took 1.05× the time).
+    const auto forEachPixel = [&](const auto& pixel) {
+        tbb::parallel_for(
+            tbb::blocked_range2d<int>(0, image.height, 8, 0, image.width, 8),
+            [&](const tbb::blocked_range2d<int>& r) {
+                for (int y = r.rows().begin(); y != r.rows().end(); ++y)
+                    for (int x = r.cols().begin(); x != r.cols().end(); ++x) pixel(x, y);
+            },
+            tbb::simple_partitioner());
     };
     if (!dispersed) {
         shared::ViewKernelCpu kernel{{p}};
         EmptyBricks bricks;
         attach(kernel, gradient, bricks);
-        forEachRow([&](int y) {
-            for (int x = 0; x < image.width; ++x) image.at(x, y) = kernel.renderPixel(x, y);
-        });
+        forEachPixel([&](int x, int y) { image.at(x, y) = kernel.renderPixel(x, y); });
         return image;
     }
     // Dispersion: each channel's rays bend with its own n (shaders/shared/view_march.h,
@@ -95,13 +99,11 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     attach(kernels[0], channelGradients->red, bricks[0]);
     attach(kernels[1], gradient, bricks[1]);
     attach(kernels[2], channelGradients->blue, bricks[2]);
-    forEachRow([&](int y) {
-        for (int x = 0; x < image.width; ++x) {
-            glm::vec4 pixel(0.0f);
-            for (shared::ViewKernelCpu& kernel : kernels)
-                pixel = kernel.renderPixelChannel(x, y, pixel);
-            image.at(x, y) = pixel;
-        }
+    forEachPixel([&](int x, int y) {
+        glm::vec4 pixel(0.0f);
+        for (shared::ViewKernelCpu& kernel : kernels)
+            pixel = kernel.renderPixelChannel(x, y, pixel);
+        image.at(x, y) = pixel;
     });
     return image;
 }
