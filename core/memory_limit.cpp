@@ -11,6 +11,8 @@
 #include <fstream>
 #include <mutex>
 
+#include <tbb/task_arena.h>
+
 #include "core/error.h"
 #include "core/printable.h"
 
@@ -114,6 +116,12 @@ void checkMemory(const std::string& where, double bytes, const std::string& what
                            ", over eikon's memory limit of " + formatBytes(limit.bytes) + " (" +
                            limit.origin + "); " + advice +
                            ", or raise the limit with --memory-limit or EIKON_MEMORY_LIMIT");
+}
+
+double renderVolumeBytes(double voxels) {
+    const double otherThreads = double(std::max(tbb::this_task_arena::max_concurrency() - 1, 0));
+    return voxels * kRenderBytesPerVoxel +
+           std::min(otherThreads * voxels * kDepositBytesPerVoxel, kThreadDepositBudget);
 }
 
 }  // namespace eikon

@@ -47,8 +47,17 @@ void checkMemory(const std::string& where, double bytes, const std::string& what
 // and not more than 4 times the measured slope).
 //
 // Render volume: the dense copies of the fields, ∇n, the octree, the fluence and the GPU
-// textures (which live in host memory on llvmpipe). Measured 118 B per voxel.
+// textures (which live in host memory on llvmpipe), with one volume of particle deposits.
+// Measured 118 B per voxel.
 constexpr double kRenderBytesPerVoxel = 160.0;
+// The CPU particle traces' deposits: 6 int64 sums a voxel in each tracing thread's own volume
+// (render/transport/photons/deposit_buffers_cpu.h). kRenderBytesPerVoxel counts one; the other
+// threads' take at most kThreadDepositBudget together (past it, threads share atomics).
+constexpr double kDepositBytesPerVoxel = 48.0;
+constexpr double kThreadDepositBudget = 1073741824.0;  // 1 GiB
+// The render volume of `voxels`: kRenderBytesPerVoxel each, and the deposit volumes of this
+// process's threads (TBB's concurrency) beyond the first.
+double renderVolumeBytes(double voxels);
 // Image: radiance, transmittance, tone-mapped copies. Measured 19 B per pixel.
 constexpr double kRenderBytesPerPixel = 32.0;
 // Smoke solver: the MAC velocity and its copies, density, temperature, pressure, the

@@ -114,7 +114,7 @@ RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields,
     if (scene.volume.autoResolution) {  // a fixed one was checked with the scene
         const glm::ivec3 n = v.resolution;
         checkMemory(scene.path + ":/volume/max_resolution",
-                    double(n.x) * double(n.y) * double(n.z) * kRenderBytesPerVoxel,
+                    renderVolumeBytes(double(n.x) * double(n.y) * double(n.z)),
                     "the \"auto\" render volume of " + std::to_string(n.x) + "×" +
                         std::to_string(n.y) + "×" + std::to_string(n.z) + " voxels",
                     "lower volume.max_resolution or set volume.resolution");

@@ -44,7 +44,7 @@ std::vector<MemoryPart> sceneParts(const Scene& scene, const json::Value& root) 
     if (!scene.volume.autoResolution)
         parts.push_back({whereOf(root, {"volume", "resolution"}),
                          "the render volume of " + voxelsText(scene.volume.resolution) + " voxels",
-                         product(scene.volume.resolution) * kRenderBytesPerVoxel,
+                         renderVolumeBytes(product(scene.volume.resolution)),
                          "lower volume.resolution"});
     parts.push_back(
         {whereOf(root, {"render", "width"}),

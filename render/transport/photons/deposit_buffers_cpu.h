@@ -18,13 +18,16 @@
 
 #include <tbb/task_arena.h>
 
+#include "core/memory_limit.h"
+
 namespace eikon {
 
 class DepositBuffersCpu {
 public:
-    // A thread's own volumes may take this much memory together; the threads beyond it add into
-    // the shared atomics. At 128³ a volume is 100 MB (6 sums a voxel): ten threads.
-    static constexpr size_t kOwnBudgetBytes = size_t(1) << 30;
+    // The threads' own volumes may take this much memory together; the threads beyond it add
+    // into the shared atomics. At 128³ a volume is 100 MB (6 sums a voxel): ten threads. The
+    // memory check counts them (core/memory_limit.h, renderVolumeBytes).
+    static constexpr size_t kOwnBudgetBytes = size_t(kThreadDepositBudget);
 
     // `sums`: the int64 sums of one volume (voxels × channels). `threads`: how many threads may
     // deposit at once (the calling arena's concurrency when 0). `ownBudgetBytes`: what the
