@@ -30,11 +30,19 @@ bool useHardwareTrilinear(const GlContext& gl) {
     return isSoftwareRenderer(gl.rendererName());
 }
 
-// The CPU twin's view steps through empty space without sampling it (render/empty_bricks.h), to
-// the same bits; EIKON_SKIP_EMPTY_SPACE=0 takes every step in full, to measure what that gains.
-bool skipEmptySpace() {
-    const char* env = std::getenv("EIKON_SKIP_EMPTY_SPACE");
-    return !(env && std::string(env) == "0");
+// How the CPU twin's view runs, each choice to the same bits: it steps through empty space
+// without sampling it (render/empty_bricks.h; EIKON_SKIP_EMPTY_SPACE=0 takes every step in full)
+// and runs its AVX2 copy where the processor has one (EIKON_CPU_AVX2=0 runs the baseline x86-64
+// copy), the switches there to measure what each gains.
+ViewCpuOptions viewCpuOptions() {
+    const auto off = [](const char* name) {
+        const char* env = std::getenv(name);
+        return env && std::string(env) == "0";
+    };
+    ViewCpuOptions options;
+    options.skipEmptySpace = !off("EIKON_SKIP_EMPTY_SPACE");
+    options.avx2 = !off("EIKON_CPU_AVX2");
+    return options;
 }
 
 }  // namespace
@@ -327,7 +335,7 @@ Image FrameRenderer::render(int frame) {
         Image image = renderViewCpu(setup, slotGrids,
                                     transportActive ? used->outputCpu() : TransportOutputCpu{},
                                     curved ? gradientCpu_ : noGradient, &environment,
-                                    disperses ? &channelGradientsCpu_ : nullptr, skipEmptySpace());
+                                    disperses ? &channelGradientsCpu_ : nullptr, viewCpuOptions());
         timer_->end();
         return image;
     }

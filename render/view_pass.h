@@ -27,21 +27,32 @@ struct ViewDispersionGpu {
     ParamsBuffer* params = nullptr;
 };
 
-// CPU twin: rows in parallel (TBB), each pixel independent, so the result does not depend on the
-// thread count. `light`: the light-transport method's output (render/light_transport.h), empty
+// CPU twin: 8×8 tiles in parallel (TBB), each pixel independent, so the result does not depend on
+// the thread count. `light`: the light-transport method's output (render/light_transport.h), empty
 // when the setup reads none. `gradient` is the ∇n volume (render/refraction_volume.h) when
 // curvedRays(setup.params) asks for curved rays, else empty. `environment`: the environment image
 // when environmentType(params) asks for one. `channelGradients`: under dispersion
 // (dispersesView(setup) with curved rays) the red and blue channels' ∇n volumes, `gradient` being
 // the green one's; each channel is then traced on its own (three rays a pixel).
-// `skipEmptySpace`: steps through empty bricks are taken without sampling them
-// (render/empty_bricks.h), with the same result to the bit; false takes every step in full (to
-// measure what skipping gains).
+// How the CPU twin's view runs; every choice gives the same bytes.
+struct ViewCpuOptions {
+    // Steps through empty bricks are taken without sampling them (render/empty_bricks.h); false
+    // takes every step in full (to measure what skipping gains).
+    bool skipEmptySpace = true;
+    // The per-pixel code compiled for AVX2 where the processor has it (viewCpuHasAvx2); false
+    // runs the baseline x86-64 copy (to measure, and to test that both give the same bytes).
+    bool avx2 = true;
+};
+
+// Whether this build and processor have the view's AVX2 copy (x86-64, optimized, not under the
+// sanitizers). Dispersion (three rays a pixel) always runs the baseline copy.
+bool viewCpuHasAvx2();
+
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient = {},
                     const Image* environment = nullptr,
                     const ChannelGradientsCpu* channelGradients = nullptr,
-                    bool skipEmptySpace = true);
+                    const ViewCpuOptions& options = {});
 
 // GPU pass; needs a current GL 4.3 context and the frame's parameters in the ParamsBuffer. Field
 // textures come from `textures` in slot order.

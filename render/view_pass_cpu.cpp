@@ -8,12 +8,54 @@
 #include "render/view_pass.h"
 #include "render/volume_kernels_cpu.h"
 
+// The per-pixel loop is compiled a second time for x86-64 with AVX2, with everything it calls
+// inlined into it (flatten), and runs that way where the processor has AVX2. No FMA is enabled,
+// so no a·b + c is contracted: both copies do the same IEEE operations and give the same bytes
+// (tests/render/test_view_isa.cpp). The AVX2 copy took 0.8× the time of the view at 128³
+// (BENCHMARKS.md, "AVX2"). Not under the sanitizers, where the flattened copy would take many
+// minutes to compile, nor off x86-64.
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__OPTIMIZE__) && \
+    !defined(__SANITIZE_ADDRESS__)
+#define EK_VIEW_AVX2 1
+#endif
+
 namespace eikon {
+namespace {
+
+[[gnu::always_inline]] inline void renderTilePixels(shared::ViewKernelCpu& kernel, Image& image,
+                                                    const tbb::blocked_range2d<int>& tile) {
+    for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)
+        for (int x = tile.cols().begin(); x != tile.cols().end(); ++x)
+            image.at(x, y) = kernel.renderPixel(x, y);
+}
+
+void renderTileBaseline(shared::ViewKernelCpu& kernel, Image& image,
+                        const tbb::blocked_range2d<int>& tile) {
+    renderTilePixels(kernel, image, tile);
+}
+
+#ifdef EK_VIEW_AVX2
+[[gnu::target("avx2"), gnu::flatten]] void renderTileAvx2(shared::ViewKernelCpu& kernel,
+                                                          Image& image,
+                                                          const tbb::blocked_range2d<int>& tile) {
+    renderTilePixels(kernel, image, tile);
+}
+#endif
+
+}  // namespace
+
+bool viewCpuHasAvx2() {
+#ifdef EK_VIEW_AVX2
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
 
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient,
                     const Image* environment, const ChannelGradientsCpu* channelGradients,
-                    bool skipEmptySpace) {
+                    const ViewCpuOptions& options) {
     const shared::GpuViewParams& p = setup.params;
     if (slotGrids.size() != setup.slotFields.size())
         throw Error("view pass (CPU)", "expected " + std::to_string(setup.slotFields.size()) +
@@ -51,7 +93,7 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     // its own empty bricks.
     const auto attach = [&](shared::ViewKernelCpu& kernel, const std::vector<glm::vec4>& grad,
                             EmptyBricks& bricks) {
-        if (skipEmptySpace) {
+        if (options.skipEmptySpace) {
             bricks = findEmptyBricks(glm::ivec3(p.resolution), fields,
                                      shared::curvedRays(p) ? grad.data() : nullptr);
             kernel.emptyBricks = bricks.empty.data();
@@ -73,20 +115,21 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     Image image(p.image.x, p.image.y);
     // In tiles of 8×8 pixels: neighbouring rays read the same voxels, so a tile finds most of
     // them in the cache (rows of 640 did not: the view at 128³ took 1.05× the time).
-    const auto forEachPixel = [&](const auto& pixel) {
-        tbb::parallel_for(
-            tbb::blocked_range2d<int>(0, image.height, 8, 0, image.width, 8),
-            [&](const tbb::blocked_range2d<int>& r) {
-                for (int y = r.rows().begin(); y != r.rows().end(); ++y)
-                    for (int x = r.cols().begin(); x != r.cols().end(); ++x) pixel(x, y);
-            },
-            tbb::simple_partitioner());
+    const auto forEachTile = [&](const auto& renderTile) {
+        tbb::parallel_for(tbb::blocked_range2d<int>(0, image.height, 8, 0, image.width, 8),
+                          renderTile, tbb::simple_partitioner());
     };
     if (!dispersed) {
         shared::ViewKernelCpu kernel{{p}};
         EmptyBricks bricks;
         attach(kernel, gradient, bricks);
-        forEachPixel([&](int x, int y) { image.at(x, y) = kernel.renderPixel(x, y); });
+        const bool avx2 = options.avx2 && viewCpuHasAvx2();
+        forEachTile([&](const tbb::blocked_range2d<int>& tile) {
+#ifdef EK_VIEW_AVX2
+            if (avx2) return renderTileAvx2(kernel, image, tile);
+#endif
+            renderTileBaseline(kernel, image, tile);
+        });
         return image;
     }
     // Dispersion: each channel's rays bend with its own n (shaders/shared/view_march.h,
@@ -99,11 +142,14 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     attach(kernels[0], channelGradients->red, bricks[0]);
     attach(kernels[1], gradient, bricks[1]);
     attach(kernels[2], channelGradients->blue, bricks[2]);
-    forEachPixel([&](int x, int y) {
-        glm::vec4 pixel(0.0f);
-        for (shared::ViewKernelCpu& kernel : kernels)
-            pixel = kernel.renderPixelChannel(x, y, pixel);
-        image.at(x, y) = pixel;
+    forEachTile([&](const tbb::blocked_range2d<int>& tile) {
+        for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)
+            for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
+                glm::vec4 pixel(0.0f);
+                for (shared::ViewKernelCpu& kernel : kernels)
+                    pixel = kernel.renderPixelChannel(x, y, pixel);
+                image.at(x, y) = pixel;
+            }
     });
     return image;
 }
