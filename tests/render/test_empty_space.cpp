@@ -9,12 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "core/scene.h"
 #include "render/empty_bricks.h"
-#include "render/frame_renderer.h"
-#include "render/image.h"
-#include "support/light_transport_setup.h"
-#include "support/test_paths.h"
+#include "support/cpu_view_variants.h"
 
 using eikon::EmptyBricks;
 using eikon::findEmptyBricks;
@@ -23,18 +19,6 @@ namespace {
 
 size_t brickIndex(const EmptyBricks& b, int x, int y, int z) {
     return (size_t(z) * size_t(b.count.y) + size_t(y)) * size_t(b.count.x) + size_t(x);
-}
-
-// The picture of a fresh CPU renderer, with empty space skipped or every step taken in full.
-eikon::Image renderCpu(const eikon::Scene& scene, bool skip) {
-    if (skip)
-        unsetenv("EIKON_SKIP_EMPTY_SPACE");
-    else
-        setenv("EIKON_SKIP_EMPTY_SPACE", "0", 1);
-    eikon::FrameRenderer renderer(scene, eikon::Backend::Cpu);
-    eikon::Image image = renderer.render(0);
-    unsetenv("EIKON_SKIP_EMPTY_SPACE");
-    return image;
 }
 
 }  // namespace
@@ -100,35 +84,13 @@ TEST_CASE("empty bricks: a voxel that holds something keeps every brick whose sa
 
 TEST_CASE("skipping empty space gives the picture of every step taken in full, to the bit",
           "[empty_space][view]") {
-    struct Case {
-        std::string name;  // what it covers
-        std::string file;
-        float ior;     // > 0: the first material's, to bend the rays
-        int perSide;   // > 0: photons per side
-        float fogTop;  // < 1e9: the first source (a box of fog) ends at this height
-    };
-    const Case cases[] = {
-        {"straight rays: a fog sphere in a box, light volumes", "fog_sphere_spot", 0.0f, 0, 1e9f},
-        {"curved rays through a graded sphere", "fog_sphere_spot", 1.3f, 0, 1e9f},
-        // The ball sits half in a layer of fog, half in empty space; its rays reflect, and the
-        // camera's rays end on the floor.
-        {"a glass ball's sharp surface, photons, a receiver", "glass_sphere_floor", 0.0f, 24, 0.3f},
-        {"a glass mesh's sharp surface, photons, a receiver", "glass_mesh_floor", 0.0f, 24, 0.0f},
-        {"dispersion: three rays a pixel, each channel's own gradient", "crystal_dispersion", 0.0f,
-         0, 1e9f},
-    };
-    for (const Case& c : cases) {
+    for (const eikon::test::ViewVariantCase& c : eikon::test::viewVariantCases()) {
         INFO(c.name);
-        eikon::Scene scene =
-            eikon::loadScene(eikon::test::sourcePath("data/scenes/" + c.file + ".json"));
-        scene.render.width = 40;
-        scene.render.height = 30;
-        if (c.ior > 0.0f) scene.materials[0].ior = c.ior;
-        if (c.fogTop < 1e9f) scene.sources[0].boxMax.y = c.fogTop;
-        if (c.perSide > 0)
-            eikon::test::setTransportSetting(scene, "photons", "per_side", c.perSide);
-        const eikon::Image full = renderCpu(scene, false);
-        const eikon::Image skipped = renderCpu(scene, true);
+        const eikon::Scene scene = eikon::test::loadViewVariantScene(c);
+        const eikon::Image full =
+            eikon::test::renderCpuWithSwitch(scene, "EIKON_SKIP_EMPTY_SPACE", "0");
+        const eikon::Image skipped =
+            eikon::test::renderCpuWithSwitch(scene, "EIKON_SKIP_EMPTY_SPACE", nullptr);
         const bool sameBits = full.width == skipped.width && full.height == skipped.height &&
                               full.pixels == skipped.pixels;
         CHECK(sameBits);

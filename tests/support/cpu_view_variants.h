@@ -1,0 +1,63 @@
+#pragma once
+// Scenes for tests that hold a shortcut of the CPU twin's view to the picture without it, to the
+// bit (tests/render/test_empty_space.cpp, test_view_isa.cpp): a fresh CPU renderer's picture with
+// an environment switch set or unset, and the scenes that cover straight and curved rays, sharp
+// surfaces, photons and receivers.
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+#include "render/frame_renderer.h"
+#include "render/image.h"
+#include "support/light_transport_setup.h"
+#include "support/test_paths.h"
+
+namespace eikon::test {
+
+// The picture of a fresh CPU renderer with environment variable `name` set to `value`, or unset
+// where value is null; unset again afterwards.
+inline Image renderCpuWithSwitch(const Scene& scene, const char* name, const char* value) {
+    if (value)
+        setenv(name, value, 1);
+    else
+        unsetenv(name);
+    FrameRenderer renderer(scene, Backend::Cpu);
+    Image image = renderer.render(0);
+    unsetenv(name);
+    return image;
+}
+
+struct ViewVariantCase {
+    std::string name;  // what it covers
+    std::string file;  // data/scenes/<file>.json
+    float ior;         // > 0: the first material's, to bend the rays
+    int perSide;       // > 0: photons per side
+    float fogTop;      // < 1e9: the first source (a box of fog) ends at this height
+};
+
+inline std::vector<ViewVariantCase> viewVariantCases() {
+    return {
+        {"straight rays: a fog sphere in a box, light volumes", "fog_sphere_spot", 0.0f, 0, 1e9f},
+        {"curved rays through a graded sphere", "fog_sphere_spot", 1.3f, 0, 1e9f},
+        // The ball sits half in a layer of fog, half in empty space; its rays reflect, and the
+        // camera's rays end on the floor.
+        {"a glass ball's sharp surface, photons, a receiver", "glass_sphere_floor", 0.0f, 24, 0.3f},
+        {"a glass mesh's sharp surface, photons, a receiver", "glass_mesh_floor", 0.0f, 24, 0.0f},
+        {"dispersion: three rays a pixel, each channel's own gradient", "crystal_dispersion", 0.0f,
+         0, 1e9f},
+    };
+}
+
+// The case's scene at 40×30.
+inline Scene loadViewVariantScene(const ViewVariantCase& c) {
+    Scene scene = loadScene(sourcePath("data/scenes/" + c.file + ".json"));
+    scene.render.width = 40;
+    scene.render.height = 30;
+    if (c.ior > 0.0f) scene.materials[0].ior = c.ior;
+    if (c.fogTop < 1e9f) scene.sources[0].boxMax.y = c.fogTop;
+    if (c.perSide > 0) setTransportSetting(scene, "photons", "per_side", c.perSide);
+    return scene;
+}
+
+}  // namespace eikon::test
