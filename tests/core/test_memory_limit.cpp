@@ -121,8 +121,9 @@ TEST_CASE("parts that fit alone are refused together, at the largest part", "[me
                      "voxel_size": 0.02}],
         "materials": [{"name": "fog", "field": "density", "absorption": [1,1,1]}],
         "render": {"width": 640, "height": 480}})";
-    // volume 64³ · 160 B = 40 MiB, box ~4.7 MiB, image 9.4 MiB: each fits in 45 MiB, not all.
-    LimitScope scope(45.0 * 1024 * 1024);
+    // volume 64³ · 160 B = 40 MiB (and 12 MiB for each thread past the first: its deposits), box
+    // ~4.7 MiB, image 9.4 MiB: each fits in the volume's estimate and 5 MiB, not all.
+    LimitScope scope(renderVolumeBytes(64.0 * 64.0 * 64.0) + 5.0 * 1024 * 1024);
     CHECK_THROWS_WITH(parseScene(text, "fog.json"),
                       Contains("fog.json:/volume/resolution: the scene (its largest part: the "
                                "render volume of 64×64×64 voxels"));

@@ -27,15 +27,20 @@ DepositBuffersCpu::~DepositBuffersCpu() {
 // request: `madvise` is Debian's default). Zeroing one on 4 KiB pages took 31-46 ms at 64³
 // (12.6 MB, 3,000 page faults in this VM), a quarter of the photon stage at 64 photons a side; a
 // huge page is one fault. Without them (another kernel setting) it is the same memory on small
-// pages. Zero bits are a zero std::atomic<int64_t> (lock-free) as well as a zero uint64_t.
+// pages. A volume under one huge page stays on small pages: a huge page would be resident whole,
+// most of it unused, once per thread. EIKON_NO_HUGE_PAGES keeps every volume on small pages, as it
+// keeps malloc's (apps/huge_page_malloc.cpp). Zero bits are a zero std::atomic<int64_t>
+// (lock-free) as well as a zero uint64_t.
 void* DepositBuffersCpu::allocate() const {
     constexpr size_t kHugePage = size_t(2) << 20;
     const size_t bytes = std::max<size_t>(sums_ * sizeof(int64_t), 1);
-    const size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-    void* memory = std::aligned_alloc(kHugePage, rounded);
+    const bool huge = bytes >= kHugePage && !std::getenv("EIKON_NO_HUGE_PAGES");
+    const size_t alignment = huge ? kHugePage : size_t(64);
+    const size_t rounded = (bytes + alignment - 1) / alignment * alignment;
+    void* memory = std::aligned_alloc(alignment, rounded);
     if (!memory) throw std::bad_alloc();
 #ifdef MADV_HUGEPAGE
-    madvise(memory, rounded, MADV_HUGEPAGE);  // advice: refused, the small pages still work
+    if (huge) madvise(memory, rounded, MADV_HUGEPAGE);  // advice: refused, small pages still work
 #endif
     std::memset(memory, 0, bytes);
     return memory;
