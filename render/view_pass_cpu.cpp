@@ -11,7 +11,7 @@
 // The per-pixel loop is compiled a second time for x86-64 with AVX2, with everything it calls
 // inlined into it (flatten), and runs that way where the processor has AVX2. No FMA is enabled,
 // so no a·b + c is contracted: both copies do the same IEEE operations and give the same bytes
-// (tests/render/test_view_isa.cpp). The AVX2 copy took 0.8× the time of the view at 128³
+// (tests/render/test_view_isa.cpp). The AVX2 copy took 0.85× the time of the view at 128³
 // (BENCHMARKS.md, "AVX2"). Not under the sanitizers, where the flattened copy would take many
 // minutes to compile, nor off x86-64.
 #if defined(__x86_64__) && defined(__GNUC__) && defined(__OPTIMIZE__) && \
