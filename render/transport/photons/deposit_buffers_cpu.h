@@ -58,7 +58,8 @@ public:
         return int64_t(total);
     }
 
-    // How many threads have a volume of their own (the rest share the atomics).
+    // How many threads may have a volume of their own (the budget's share; the rest share the
+    // atomics). Each is made on its thread's first deposit.
     int ownVolumes() const { return int(own_.size()); }
 
 private:
