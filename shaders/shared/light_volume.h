@@ -83,5 +83,5 @@ vec3 sweptLightTransmittance(int l, ivec3 v) {
     c[u] = u0;
     const vec3 t01 = vec3(fetchPreviousSlice(c));
     const vec3 tPrev = mix(mix(t00, t10, qu - bu), mix(t01, t11, qu - bu), qw - bw);
-    return tPrev * exp(-0.5f * (extinctionAt(p) + extinctionAt(pPrev)) * delta);
+    return tPrev * channelDecay(0.5f * (extinctionAt(p) + extinctionAt(pPrev)), delta);
 }

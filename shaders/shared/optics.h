@@ -11,6 +11,16 @@
 EK_CONST float EK_PI = 3.14159265358979f;
 EK_CONST int EK_MAX_STEPS = 1 << 20;  // a bound on any march, so no input can hang a pass
 
+// e^(−κs) for each channel. In C++ (the CPU twins) a grey κ, the three channels equal (smoke),
+// takes one exp for all three: the same function of the same value, so the same floats, for a
+// third of the exps.
+vec3 channelDecay(vec3 kappa, float s) {
+#ifdef __cplusplus
+    if (kappa.x == kappa.y && kappa.x == kappa.z) return vec3(exp(-kappa.x * s));
+#endif
+    return exp(-kappa * s);
+}
+
 // Henyey–Greenstein phase function, normalised over the sphere; cosTheta is the cosine between
 // the direction light travels and the direction it scatters into.
 float phaseHG(float g, float cosTheta) {

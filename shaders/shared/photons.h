@@ -354,6 +354,16 @@ float photonDecayIntegral(float kappa, float s) {
     return kappa * s > 1e-4f ? (1.0f - exp(-kappa * s)) / kappa : s * (1.0f - 0.5f * kappa * s);
 }
 
+// photonDecayIntegral for each channel. In C++ (the CPU twins) a grey κ takes one for all three,
+// as channelDecay (optics.h) takes one exp.
+vec3 photonDecayIntegrals(vec3 kappa, float s) {
+#ifdef __cplusplus
+    if (kappa.x == kappa.y && kappa.x == kappa.z) return vec3(photonDecayIntegral(kappa.x, s));
+#endif
+    return vec3(photonDecayIntegral(kappa.x, s), photonDecayIntegral(kappa.y, s),
+                photonDecayIntegral(kappa.z, s));
+}
+
 // Deposits the segment a → b (world), of length s and unit direction dir, carrying flux0 at a and
 // decaying with constant extinction kappa: each voxel the segment crosses receives the exact
 // ∫ flux dt over its piece (3D DDA, Amanatides and Woo 1987), and that amount's luminance times
@@ -389,10 +399,7 @@ void depositSegment(vec3 a, vec3 b, float s, vec3 dir, vec3 flux0, vec3 kappa) {
             const float len = (tNext - t) * s;
             // The mask last: × 1 keeps the bits of a trace without dispersion.
             const vec3 fluxLength =
-                flux0 * exp(-kappa * t0) *
-                vec3(photonDecayIntegral(kappa.x, len), photonDecayIntegral(kappa.y, len),
-                     photonDecayIntegral(kappa.z, len)) *
-                photonChannels;
+                flux0 * channelDecay(kappa, t0) * photonDecayIntegrals(kappa, len) * photonChannels;
             // Rec. 709 luminance: one scalar weight per piece for the mean direction.
             const float lum = dot(fluxLength, vec3(0.2126f, 0.7152f, 0.0722f));
             depositVoxel(voxel, fluxLength, lum * dir);
@@ -493,7 +500,7 @@ int photonStep(EK_INOUT(GpuPhoton) photon, float minStep, int integrator,
     const vec3 flux = vec3(photon.flux);
     const vec3 kappa = extinctionAt(worldToVolumeIndex(0.5f * (x + next)));
     depositSegment(x, next, s, segmentDir, flux, kappa);
-    const vec3 fluxNext = flux * exp(-kappa * s);
+    const vec3 fluxNext = flux * channelDecay(kappa, s);
     extinguished += flux - fluxNext;
     photon.position = vec4(next, photon.position.w);
     photon.direction = vec4(vNext, photon.direction.w + 1.0f);

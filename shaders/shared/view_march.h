@@ -22,6 +22,15 @@ float stepWeight(float kappa, float s) {
     return kappa * s > 1e-5f ? (1.0f - exp(-kappa * s)) / kappa : s * (1.0f - 0.5f * kappa * s);
 }
 
+// stepWeight for each channel. In C++ (the CPU twins) a grey κ takes one for all three, as
+// channelDecay (optics.h) takes one exp.
+vec3 stepWeights(vec3 kappa, float s) {
+#ifdef __cplusplus
+    if (kappa.x == kappa.y && kappa.x == kappa.z) return vec3(stepWeight(kappa.x, s));
+#endif
+    return vec3(stepWeight(kappa.x, s), stepWeight(kappa.y, s), stepWeight(kappa.z, s));
+}
+
 // Light scattered toward the camera (along −dir) at volume index position p from the fluence
 // volumes (Sun et al. 2008 §5.4): the fluence rate φ = Σ flux·length / voxel volume, and one
 // phase function per material around the stored mean direction the light travels. Where the
@@ -213,9 +222,8 @@ EK_FORCE_INLINE bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(
             source += scattered * irradiance * lightShadow(l, x, p, toLight, lightDistance);
         }
     }
-    radiance += transmittance * source *
-                vec3(stepWeight(kappa.x, s), stepWeight(kappa.y, s), stepWeight(kappa.z, s));
-    transmittance *= exp(-kappa * s);
+    radiance += transmittance * source * stepWeights(kappa, s);
+    transmittance *= channelDecay(kappa, s);
     if (max(max(transmittance.x, transmittance.y), transmittance.z) < minTransmittance(params)) {
         transmittance = vec3(0.0f);  // what is left is below the cut-off the scene set
         return false;

@@ -457,7 +457,7 @@ int patchStep(EK_INOUT(GpuWavefrontPatch) p, float dt, int integrator, int atCau
     const float b = min(span.y, s);
     if (s > 0.0f && a < b) {
         const vec3 kappa = extinctionAt(worldToVolumeIndex(c0 + (0.5f * (a + b)) * dir));
-        const vec3 next = power * exp(-kappa * (b - a));
+        const vec3 next = power * channelDecay(kappa, b - a);
         extinguished += power - next;
         power = next;
     }
