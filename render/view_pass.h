@@ -42,6 +42,9 @@ struct ViewCpuOptions {
     // The per-pixel code compiled for AVX2 where the processor has it (viewCpuHasAvx2); false
     // runs the baseline x86-64 copy (to measure, and to test that both give the same bytes).
     bool avx2 = true;
+    // Samples in bricks where their volume holds one value are taken without fetching the
+    // corners (render/constant_bricks.h); false fetches every corner.
+    bool constantBricks = true;
 };
 
 // Whether this build and processor have the view's AVX2 copy (x86-64, optimized, not under the

@@ -2,7 +2,10 @@
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
 
+#include <optional>
+
 #include "core/error.h"
+#include "render/constant_bricks.h"
 #include "render/empty_bricks.h"
 #include "render/receiver_map.h"
 #include "render/view_pass.h"
@@ -92,12 +95,24 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     // Every kernel reads the same volumes; under dispersion each channel's its own ∇n, and so has
     // its own empty bricks.
     const auto attach = [&](shared::ViewKernelCpu& kernel, const std::vector<glm::vec4>& grad,
-                            EmptyBricks& bricks) {
+                            EmptyBricks& bricks, std::optional<ConstantBricks>& constant) {
         if (options.skipEmptySpace) {
             bricks = findEmptyBricks(glm::ivec3(p.resolution), fields,
                                      shared::curvedRays(p) ? grad.data() : nullptr);
             kernel.emptyBricks = bricks.empty.data();
             kernel.emptyBrickCount = bricks.count;
+        }
+        if (options.constantBricks) {
+            constant.emplace(glm::ivec3(p.resolution));
+            for (size_t s = 0; s < fields.size(); ++s) constant->addField(int(s), fields[s]);
+            for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
+                constant->addVolume(EK_MAX_MATERIALS + int(l), light.lightTransmittance[l]);
+            if (shared::curvedRays(p)) constant->addVolume(EK_GRADIENT_SLOT, grad.data());
+            if (shared::readsFluence(p)) {
+                constant->addVolume(EK_FLUENCE_SLOT, light.fluence);
+                constant->addVolume(EK_FLUENCE_DIRECTION_SLOT, light.direction);
+            }
+            kernel.constantBricks = &*constant;
         }
         for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
             kernel.lights[l] = light.lightTransmittance[l];
@@ -122,7 +137,8 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     if (!dispersed) {
         shared::ViewKernelCpu kernel{{p}};
         EmptyBricks bricks;
-        attach(kernel, gradient, bricks);
+        std::optional<ConstantBricks> constant;
+        attach(kernel, gradient, bricks, constant);
         const bool avx2 = options.avx2 && viewCpuHasAvx2();
         forEachTile([&](const tbb::blocked_range2d<int>& tile) {
 #ifdef EK_VIEW_AVX2
@@ -139,9 +155,10 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
     const shared::GpuViewParams blue = channelViewParams(setup, 2);
     shared::ViewKernelCpu kernels[3] = {{{red}}, {{green}}, {{blue}}};
     EmptyBricks bricks[3];
-    attach(kernels[0], channelGradients->red, bricks[0]);
-    attach(kernels[1], gradient, bricks[1]);
-    attach(kernels[2], channelGradients->blue, bricks[2]);
+    std::optional<ConstantBricks> constant[3];
+    attach(kernels[0], channelGradients->red, bricks[0], constant[0]);
+    attach(kernels[1], gradient, bricks[1], constant[1]);
+    attach(kernels[2], channelGradients->blue, bricks[2], constant[2]);
     forEachTile([&](const tbb::blocked_range2d<int>& tile) {
         for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)
             for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {

@@ -8,6 +8,7 @@
 #include <cstddef>
 
 #include "core/ray_integrator.h"
+#include "render/constant_bricks.h"
 #include "render/empty_bricks.h"
 
 #include "shaders/shared/gpu_types.h"
@@ -19,6 +20,9 @@
 // Steps through empty space without sampling it (view_march.h; render/empty_bricks.h): only here,
 // where the empty bricks are found. The GPU takes every step in full, with the same result.
 #define EK_SKIP_EMPTY_SPACE
+// Takes a trilinear sample in a brick where its volume holds one value without fetching the eight
+// corners (shaders/shared/sampling.h; render/constant_bricks.h): only here, with the same floats.
+#define EK_CONSTANT_BRICKS
 
 EK_NAMESPACE_BEGIN
 
@@ -56,6 +60,20 @@ struct VolumeAccessCpu {
                                                      : v[window.axis];
         return size_t(k % window.slices) * window.planeTexels +
                size_t(v[window.w]) * size_t(params.resolution[window.u]) + size_t(v[window.u]);
+    }
+
+    // Where the volumes hold one value over a brick (render/constant_bricks.h); null: nowhere,
+    // every sample fetches its eight corners.
+    const ConstantBricks* constantBricks = nullptr;
+    // Whether slot `slot` holds one value, set in `value`, over every voxel a sample with lower
+    // corner voxel `corner` (clamped into the volume) reads.
+    EK_FORCE_INLINE bool constantBrickValue(int slot, ivec3 corner, vec4& value) const {
+        if (!constantBricks) return false;
+        const size_t brick = constantBricks->brickIndex(corner);
+        if (!(constantBricks->mask[brick] >> slot & 1)) return false;
+        const size_t column = size_t(constantBricks->column[slot]);
+        value = constantBricks->values[column * constantBricks->mask.size() + brick];
+        return true;
     }
 
     size_t voxelIndex(ivec3 v) const {

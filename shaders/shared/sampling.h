@@ -34,6 +34,17 @@ EK_FORCE_INLINE vec4 sampleVolume(int slot, vec3 indexPos) {
     const vec3 base = floor(q);
     const vec3 f = q - base;
     const ivec3 i0 = clamp(ivec3(base), ivec3(0), last);
+#ifdef EK_CONSTANT_BRICKS
+    // CPU twins only (render/constant_bricks.h): where the volume holds one value c over every
+    // voxel a sample from corner i0 reads, the eight corners are c, and these are the mixes below
+    // of those corners, without fetching them.
+    vec4 c;
+    if (constantBrickValue(slot, i0, c)) {
+        const vec4 a = mix(c, c, f.x);
+        const vec4 b = mix(a, a, f.y);
+        return mix(b, b, f.z);
+    }
+#endif
     const ivec3 i1 = clamp(ivec3(base) + ivec3(1), ivec3(0), last);
     const vec4 c000 = fetchVolume(slot, ivec3(i0.x, i0.y, i0.z));
     const vec4 c100 = fetchVolume(slot, ivec3(i1.x, i0.y, i0.z));

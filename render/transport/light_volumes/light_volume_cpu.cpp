@@ -2,6 +2,8 @@
 #include <tbb/blocked_range3d.h>
 #include <tbb/parallel_for.h>
 
+#include <optional>
+
 #include "core/error.h"
 #include "render/transport/light_volumes/light_volume.h"
 #include "render/volume_kernels_cpu.h"
@@ -14,6 +16,14 @@ std::vector<LightVolumeCpu> computeLightVolumesCpu(const ViewSetup& setup,
     const glm::ivec3 res(p.resolution.x, p.resolution.y, p.resolution.z);
     shared::LightKernelCpu kernel{{p}};
     for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
+    // The fields where they hold one value (render/constant_bricks.h): the extinction's samples
+    // there fetch no corners.
+    std::optional<ConstantBricks> constant;
+    if (constantBricksEnabled()) {
+        constant.emplace(res);
+        for (size_t s = 0; s < slotGrids.size(); ++s) constant->addField(int(s), kernel.fields[s]);
+        kernel.constantBricks = &*constant;
+    }
 
     std::vector<LightVolumeCpu> volumes(size_t(shared::lightCount(p)));
     for (int l = 0; l < shared::lightCount(p); ++l) {

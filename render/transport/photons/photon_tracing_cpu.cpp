@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -213,12 +214,23 @@ PhotonResultCpu traceLightPhotonsCpu(const ViewSetup& setup,
 
     for (int pass = 0; pass < passes; ++pass) {
         kernel.gradient = gradients[pass]->data();
+        // The fields and this pass's ∇n where they hold one value (render/constant_bricks.h):
+        // a step's samples there fetch no corners.
+        std::optional<ConstantBricks> constant;
+        if (constantBricksEnabled()) {
+            constant.emplace(glm::ivec3(setup.params.resolution));
+            for (size_t s = 0; s < slotGrids.size(); ++s)
+                constant->addField(int(s), kernel.fields[s]);
+            constant->addVolume(EK_GRADIENT_SLOT, kernel.gradient);
+        }
+        kernel.constantBricks = constant ? &*constant : nullptr;
         kernel.photonChannels = channelPassMask(pass, passes);
         // Each channel's photons start with its own n (v = n·d).
         if (pass > 0 || gradients[pass] != &gradient)
             photons = generatePhotonsCpu(setup, *gradients[pass], settings);
         result.rounds += marchPhotonsCpu(kernel, plan, integrator, tracedPerPass, sums, photons);
         result.photons.insert(result.photons.end(), photons.begin(), photons.end());
+        kernel.constantBricks = nullptr;
     }
     result.photonsTraced = tracedPerPass * passes;
 
