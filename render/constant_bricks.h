@@ -48,7 +48,7 @@ struct ConstantBricks {
     // How many bricks hold slot `slot` constant.
     size_t constantCount(int slot) const;
 
-  private:
+private:
     template <typename Fetch>
     void add(int slot, const Fetch& fetch);
 };
