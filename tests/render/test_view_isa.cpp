@@ -14,12 +14,6 @@ TEST_CASE("the view's AVX2 copy gives the baseline copy's picture, to the bit", 
     for (const eikon::test::ViewVariantCase& c : eikon::test::viewVariantCases()) {
         INFO(c.name);
         const eikon::Scene scene = eikon::test::loadViewVariantScene(c);
-        const eikon::Image avx2 =
-            eikon::test::renderCpuWithSwitch(scene, "EIKON_CPU_AVX2", nullptr);
-        const eikon::Image baseline =
-            eikon::test::renderCpuWithSwitch(scene, "EIKON_CPU_AVX2", "0");
-        REQUIRE(avx2.width == baseline.width);
-        REQUIRE(avx2.height == baseline.height);
-        CHECK(avx2.pixels == baseline.pixels);
+        CHECK(eikon::test::switchKeepsEveryByte(scene, "EIKON_CPU_AVX2"));
     }
 }

@@ -1,9 +1,10 @@
 #pragma once
 // Scenes for tests that hold a shortcut of the CPU twin's view to the picture without it, to the
-// bit (tests/render/test_empty_space.cpp, test_view_isa.cpp): a fresh CPU renderer's picture with
-// an environment switch set or unset, and the scenes that cover straight and curved rays, sharp
-// surfaces, photons and receivers.
+// bit (tests/render/test_empty_space.cpp, test_view_isa.cpp, test_constant_bricks.cpp): a fresh CPU
+// renderer's picture with an environment switch set or unset, and the scenes that cover straight
+// and curved rays, sharp surfaces, photons and receivers.
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,16 @@ inline Image renderCpuWithSwitch(const Scene& scene, const char* name, const cha
     Image image = renderer.render(0);
     unsetenv(name);
     return image;
+}
+
+// Whether the pictures of `scene` with switch `name` set to "0" (the shortcut off) and unset are
+// the same bytes.
+inline bool switchKeepsEveryByte(const Scene& scene, const char* name) {
+    const Image off = renderCpuWithSwitch(scene, name, "0");
+    const Image on = renderCpuWithSwitch(scene, name, nullptr);
+    return off.width == on.width && off.height == on.height &&
+           std::memcmp(off.pixels.data(), on.pixels.data(),
+                       off.pixels.size() * sizeof(off.pixels[0])) == 0;
 }
 
 struct ViewVariantCase {
