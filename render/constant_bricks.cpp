@@ -20,8 +20,35 @@ bool finite(const glm::vec4& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
 }
 
-bool sameBits(const glm::vec4& a, const glm::vec4& b) {
-    return std::memcmp(&a, &b, sizeof(glm::vec4)) == 0;
+uint32_t wordAt(const unsigned char* bytes, size_t word) {
+    uint32_t w;
+    std::memcpy(&w, bytes + word * sizeof(uint32_t), sizeof(uint32_t));
+    return w;
+}
+
+// Whether every voxel in [lo, hi] (inclusive) of a volume of `words` 32-bit words a voxel holds
+// the bits of voxel lo. The words of each row are compared without a branch and each row decides:
+// at 111×222×112 (the Houdini smoke) a compare of a vec4 at a time took 20 ms of the view pass
+// for the density and the light volume, most of it in the bricks of zeros that scan all 125.
+template <int kWords>
+bool sameBitsOver(const unsigned char* bytes, glm::ivec3 res, glm::ivec3 lo, glm::ivec3 hi) {
+    const auto voxelIndex = [&](int x, int y, int z) {
+        return (size_t(z) * size_t(res.y) + size_t(y)) * size_t(res.x) + size_t(x);
+    };
+    uint32_t first[kWords];
+    for (int w = 0; w < kWords; ++w)
+        first[w] = wordAt(bytes, voxelIndex(lo.x, lo.y, lo.z) * kWords + w);
+    const int rowVoxels = hi.x - lo.x + 1;
+    for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y) {
+            const size_t row = voxelIndex(lo.x, y, z) * kWords;
+            uint32_t differ = 0;
+            for (int x = 0; x < rowVoxels; ++x)
+                for (int w = 0; w < kWords; ++w)
+                    differ |= wordAt(bytes, row + size_t(x * kWords + w)) ^ first[w];
+            if (differ) return false;
+        }
+    return true;
 }
 
 }  // namespace
@@ -33,17 +60,15 @@ ConstantBricks::ConstantBricks(glm::ivec3 res) : resolution(res) {
     mask.assign(size_t(count.x) * size_t(count.y) * size_t(count.z), 0);
 }
 
-template <typename Fetch>
-void ConstantBricks::add(int slot, const Fetch& fetch) {
+template <int kWords>
+void ConstantBricks::add(int slot, const void* volume) {
     if (slot < 0 || slot >= kVolumeSlotCount || column[slot] >= 0)
         throw Error("constant bricks", "slot " + std::to_string(slot) + " added twice or unknown");
     column[slot] = columns++;
     values.resize(size_t(columns) * mask.size());
+    const auto* bytes = static_cast<const unsigned char*>(volume);
     const int edge = 1 << kConstantBrickShift;
     const glm::ivec3 last = resolution - glm::ivec3(1);
-    const auto voxelIndex = [&](int x, int y, int z) {
-        return (size_t(z) * size_t(resolution.y) + size_t(y)) * size_t(resolution.x) + size_t(x);
-    };
     const uint16_t bit = uint16_t(1u << slot);
     tbb::parallel_for(tbb::blocked_range<int>(0, count.z), [&](const tbb::blocked_range<int>& r) {
         for (int bz = r.begin(); bz != r.end(); ++bz)
@@ -52,13 +77,15 @@ void ConstantBricks::add(int slot, const Fetch& fetch) {
                     // The corners i0 of the brick and the voxels i0 + 1 beside them, clamped.
                     const glm::ivec3 lo = glm::ivec3(bx, by, bz) * edge;
                     const glm::ivec3 hi = glm::min(lo + edge, last);
-                    const glm::vec4 first = fetch(voxelIndex(lo.x, lo.y, lo.z));
-                    bool constant = finite(first);
-                    for (int z = lo.z; z <= hi.z && constant; ++z)
-                        for (int y = lo.y; y <= hi.y && constant; ++y)
-                            for (int x = lo.x; x <= hi.x && constant; ++x)
-                                constant = sameBits(fetch(voxelIndex(x, y, z)), first);
-                    if (!constant) continue;
+                    const size_t firstVoxel = (size_t(lo.z) * size_t(resolution.y) + size_t(lo.y)) *
+                                                  size_t(resolution.x) +
+                                              size_t(lo.x);
+                    glm::vec4 first(0.0f);
+                    std::memcpy(&first, bytes + firstVoxel * kWords * sizeof(float),
+                                kWords * sizeof(float));
+                    // Every voxel holds first's bits: all finite where first is.
+                    if (!finite(first) || !sameBitsOver<kWords>(bytes, resolution, lo, hi))
+                        continue;
                     const size_t b = brickIndex(lo);
                     mask[b] = uint16_t(mask[b] | bit);
                     values[size_t(column[slot]) * mask.size() + b] = first;
@@ -67,11 +94,12 @@ void ConstantBricks::add(int slot, const Fetch& fetch) {
 }
 
 void ConstantBricks::addField(int slot, const float* field) {
-    add(slot, [field](size_t i) { return glm::vec4(field[i], 0.0f, 0.0f, 0.0f); });
+    add<1>(slot, field);  // fetchVolume gives (value, 0, 0, 0): the value alone decides
 }
 
 void ConstantBricks::addVolume(int slot, const glm::vec4* volume) {
-    add(slot, [volume](size_t i) { return volume[i]; });
+    static_assert(sizeof(glm::vec4) == 4 * sizeof(float));
+    add<4>(slot, volume);
 }
 
 size_t ConstantBricks::constantCount(int slot) const {

@@ -49,8 +49,9 @@ struct ConstantBricks {
     size_t constantCount(int slot) const;
 
 private:
-    template <typename Fetch>
-    void add(int slot, const Fetch& fetch);
+    // A slot of kWords 32-bit words a voxel (1: a field; 4: a vec4), compared by their bits.
+    template <int kWords>
+    void add(int slot, const void* volume);
 };
 
 // Whether the CPU twins take constant bricks' samples that way; EIKON_CONSTANT_BRICKS=0 samples
