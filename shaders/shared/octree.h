@@ -29,10 +29,11 @@
 
 #define EK_UNLIMITED_STEP 1e30f
 
-// Nodes per axis at pyramid level `level`.
+// Nodes per axis at pyramid level `level`. Shifts, not divisions: the counts are positive, so
+// x >> k is x / 2^k, and octreeLabel takes these for every level of every voxel (a division by a
+// variable is an idiv in the CPU twin: ten times the cost of a shift).
 ivec3 pyramidLevelSize(ivec3 res, int level) {
-    const int span = 1 << level;
-    return (res + ivec3(span - 1)) / ivec3(span);
+    return (res + ivec3((1 << level) - 1)) >> level;
 }
 
 // Number of levels, 0..K: K is the first level whose single node covers every axis.
@@ -119,7 +120,7 @@ vec4 octreeLabel(ivec3 res, ivec3 voxel, float epsilon, float epsilonPrime, floa
     for (int level = top; level >= 1; --level) {
         offset -= pyramidNodeCount(res, level);
         const ivec3 size = pyramidLevelSize(res, level);
-        const ivec3 node = voxel / ivec3(1 << level);
+        const ivec3 node = voxel >> level;  // voxel ≥ 0: voxel / 2^level
         const vec4 r = fetchPyramid(offset + (node.z * size.y + node.y) * size.x + node.x);
         if (kappaTolerance > 0.0f &&
             !((r.w - r.z) * (float(1 << level) * voxelLength) < kappaTolerance))
