@@ -107,27 +107,35 @@ void buildPyramidLevels(glm::ivec3 res, std::vector<glm::vec4>& pyramid) {
     }
 }
 
-}  // namespace
-
-// The shared code evaluates κ's range at 27 voxels and n at 125 for every voxel. Here each
-// voxel's κ range is evaluated once, then three passes of five: the octree stage took 1.7-1.8×
-// less time at 64³ and 128³ (BENCHMARKS.md).
-std::vector<glm::vec4> octreeLeafRangesCpu(const ViewSetup& setup,
-                                           const RefractionVolumeCpu& gradient,
-                                           const std::vector<const DenseGrid*>& slotGrids) {
+// Level 0 into the first voxel-count entries of `ranges` (at least that long: the octree passes
+// the whole pyramid, so that no level-0 copy is made), with `scratch` (as long as the volume) for
+// the passes between. The shared code evaluates κ's range at 27 voxels and n at 125 for every
+// voxel. Here each voxel's κ range is evaluated once, then three passes of five: the octree stage
+// took 1.7-1.8× less time at 64³ and 128³ (BENCHMARKS.md).
+void octreeLeafRangesInto(const ViewSetup& setup, const RefractionVolumeCpu& gradient,
+                          const std::vector<const DenseGrid*>& slotGrids,
+                          std::vector<glm::vec4>& scratch, std::vector<glm::vec4>& ranges) {
     const glm::ivec3 res = resolutionOf(setup);
     shared::VolumeAccessCpu fields = fieldAccess(setup, slotGrids);
-    std::vector<glm::vec4> a(gradient.size()), b(gradient.size());
     forEachVoxel(res, [&](glm::ivec3 v, size_t i) {
         const float n = gradient[i].w;
         const glm::vec2 kappa =
             slotGrids.empty() ? glm::vec2(0.0f) : fields.voxelExtinctionRange(v);
-        a[i] = glm::vec4(n, n, kappa.x, kappa.y);
+        scratch[i] = glm::vec4(n, n, kappa.x, kappa.y);
     });
-    leafRangePass(res, 0, a, b);
-    leafRangePass(res, 1, b, a);
-    leafRangePass(res, 2, a, b);
-    return b;
+    leafRangePass(res, 0, scratch, ranges);
+    leafRangePass(res, 1, ranges, scratch);
+    leafRangePass(res, 2, scratch, ranges);
+}
+
+}  // namespace
+
+std::vector<glm::vec4> octreeLeafRangesCpu(const ViewSetup& setup,
+                                           const RefractionVolumeCpu& gradient,
+                                           const std::vector<const DenseGrid*>& slotGrids) {
+    std::vector<glm::vec4> scratch(gradient.size()), ranges(gradient.size());
+    octreeLeafRangesInto(setup, gradient, slotGrids, scratch, ranges);
+    return ranges;
 }
 
 std::vector<glm::vec4> octreeLeafRangesPerVoxelCpu(const ViewSetup& setup,
@@ -188,18 +196,33 @@ RefractionVolumeCpu computeOctreeCpu(const ViewSetup& setup, const RefractionVol
                                      const OctreeSettings& settings,
                                      const std::vector<const DenseGrid*>& slotGrids) {
     const glm::ivec3 res = resolutionOf(setup);
-    std::vector<glm::vec4> pyramid = octreeLeafRangesCpu(setup, gradient, slotGrids);
-    pyramid.resize(octreePyramidNodeCount(res));
+    // The labels' volume is the leaf passes' scratch first: two fresh volumes where there were
+    // four (page faults were a quarter of a 128³ render's time in this VM).
+    RefractionVolumeCpu out(gradient.size());
+    std::vector<glm::vec4> pyramid(octreePyramidNodeCount(res));
+    octreeLeafRangesInto(setup, gradient, slotGrids, out, pyramid);
     buildPyramidLevels(res, pyramid);
     shared::OctreeKernelCpu k;
     k.pyramid = pyramid.data();
     const float stepLimit = octreeStepInScene(setup, settings.stepLimitVoxels);
     const float minStep = octreeStepInScene(setup, settings.minStepVoxels);
     const float voxelLength = octreeStepInScene(setup, 1.0f);
-    RefractionVolumeCpu out(gradient.size());
-    forEachVoxel(res, [&](glm::ivec3 v, size_t i) {
-        out[i] = k.octreeLabel(res, v, settings.epsilon, settings.epsilonPrime, stepLimit, minStep,
-                               settings.kappaTolerance, voxelLength);
+    // octreeLabel, its walk over the coarser levels taken once for the eight voxels of each
+    // level-1 node (level 1 is the pyramid's own: res halved, rounded up).
+    forEachVoxel(octreeLevelSize(res, 1), [&](glm::ivec3 node1, size_t) {
+        const glm::vec4 above =
+            k.octreeLabelAboveLeaves(res, node1, settings.epsilon, settings.epsilonPrime, stepLimit,
+                                     settings.kappaTolerance, voxelLength);
+        const glm::ivec3 first = node1 * 2;
+        const glm::ivec3 last = glm::min(first + 1, res - 1);
+        for (int z = first.z; z <= last.z; ++z)
+            for (int y = first.y; y <= last.y; ++y)
+                for (int x = first.x; x <= last.x; ++x) {
+                    const glm::ivec3 v(x, y, z);
+                    const size_t i =
+                        (size_t(z) * size_t(res.y) + size_t(y)) * size_t(res.x) + size_t(x);
+                    out[i] = k.octreeLabelFrom(above, res, v, minStep);
+                }
     });
     return out;
 }

@@ -108,11 +108,12 @@ vec4 pyramidNodeFromChildren(ivec3 res, int level, ivec3 node) {
     return range;
 }
 
-// x: label (level, as a float); y: Δs_max in scene units; z, w: n_min, n_max of the labelled
-// node. See the rule at the top of this file; voxelLength is the edge of a voxel (scene units)
-// that κ_tol's optical depth is measured with.
-vec4 octreeLabel(ivec3 res, ivec3 voxel, float epsilon, float epsilonPrime, float stepLimit,
-                 float minStep, float kappaTolerance, float voxelLength) {
+// The walk of octreeLabel over levels top..1 for the voxels of level-1 node `node1` (voxel >> 1).
+// Every level above 0 sees the same nodes for the eight voxels of a level-1 node, so the CPU twin
+// walks once for the eight. The label it finds (octreeLabel's), or x = −1 where no node of level 1
+// or coarser qualifies.
+vec4 octreeLabelAboveLeaves(ivec3 res, ivec3 node1, float epsilon, float epsilonPrime,
+                            float stepLimit, float kappaTolerance, float voxelLength) {
     const int top = pyramidLevelCount(res) - 1;
     // The first node of each level, walked down from past the top: pyramidNodeIndex would sum
     // the levels below anew at every level (half of the CPU twin's octree stage at 48×64×48).
@@ -120,7 +121,7 @@ vec4 octreeLabel(ivec3 res, ivec3 voxel, float epsilon, float epsilonPrime, floa
     for (int level = top; level >= 1; --level) {
         offset -= pyramidNodeCount(res, level);
         const ivec3 size = pyramidLevelSize(res, level);
-        const ivec3 node = voxel >> level;  // voxel ≥ 0: voxel / 2^level
+        const ivec3 node = node1 >> (level - 1);  // node1 ≥ 0: voxel / 2^level
         const vec4 r = fetchPyramid(offset + (node.z * size.y + node.y) * size.x + node.x);
         if (kappaTolerance > 0.0f &&
             !((r.w - r.z) * (float(1 << level) * voxelLength) < kappaTolerance))
@@ -129,6 +130,22 @@ vec4 octreeLabel(ivec3 res, ivec3 voxel, float epsilon, float epsilonPrime, floa
         if (range < epsilon) return vec4(float(level), EK_UNLIMITED_STEP, r.x, r.y);
         if (range < epsilonPrime) return vec4(float(level), stepLimit, r.x, r.y);
     }
+    return vec4(-1.0f, 0.0f, 0.0f, 0.0f);
+}
+
+// x: label (level, as a float); y: Δs_max in scene units; z, w: n_min, n_max of the labelled
+// node. See the rule at the top of this file; voxelLength is the edge of a voxel (scene units)
+// that κ_tol's optical depth is measured with. `above` is octreeLabelAboveLeaves of the voxel's
+// level-1 node.
+vec4 octreeLabelFrom(vec4 above, ivec3 res, ivec3 voxel, float minStep) {
+    if (above.x >= 0.0f) return above;
     const vec4 r0 = fetchPyramid(pyramidNodeIndex(res, 0, voxel));
     return vec4(0.0f, minStep, r0.x, r0.y);
+}
+
+vec4 octreeLabel(ivec3 res, ivec3 voxel, float epsilon, float epsilonPrime, float stepLimit,
+                 float minStep, float kappaTolerance, float voxelLength) {
+    const vec4 above = octreeLabelAboveLeaves(res, voxel >> 1, epsilon, epsilonPrime, stepLimit,
+                                              kappaTolerance, voxelLength);
+    return octreeLabelFrom(above, res, voxel, minStep);
 }
