@@ -61,26 +61,56 @@ void forEachVoxel(glm::ivec3 res, const F& f) {
                       });
 }
 
+// Folds s into a leaf range: x, y the min and max of n over the ±2 window, z, w those of κ over
+// the ±1 window (`inner`: s lies in it too). glm::min keeps the first of equal values (+0 before
+// −0), so the fold's order is pyramidLeafRange's: increasing offsets.
+inline void foldLeafRange(glm::vec4& range, const glm::vec4& s, bool inner) {
+    range.x = glm::min(range.x, s.x);
+    range.y = glm::max(range.y, s.y);
+    if (inner) {
+        range.z = glm::min(range.z, s.z);
+        range.w = glm::max(range.w, s.w);
+    }
+}
+
 // One separable pass of the leaf ranges along `axis`: x, y the min and max over ±2 voxels, z, w
 // over ±1, the window clamped at the faces as pyramidLeafRange clamps its voxels. Min and max are
-// exact and the windows are boxes, so three passes give the 5³ and 3³ windows' very floats.
+// exact and the windows are boxes, so three passes give the 5³ and 3³ windows' very floats. A
+// clamped voxel repeats the face's, which changes neither a min nor a max nor which of equal
+// values comes first: the window is cut at the face instead. Row by row along x; across rows
+// (axis 1, 2) each row of the window is folded into the whole output row in turn, which the
+// compiler vectorizes (a voxel at a time, with a clamp per offset, took 3/4 of the octree stage).
 void leafRangePass(glm::ivec3 res, int axis, const std::vector<glm::vec4>& from,
                    std::vector<glm::vec4>& to) {
-    const size_t stride = axis == 0 ? 1 : axis == 1 ? size_t(res.x) : size_t(res.x) * size_t(res.y);
-    forEachVoxel(res, [&](glm::ivec3 v, size_t i) {
-        glm::vec4 range(EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP, EK_UNLIMITED_STEP,
-                        -EK_UNLIMITED_STEP);
-        for (int d = -2; d <= 2; ++d) {
-            const int at = std::clamp(v[axis] + d, 0, res[axis] - 1);
-            const glm::vec4 s = from[i + (ptrdiff_t(at) - v[axis]) * ptrdiff_t(stride)];
-            range.x = glm::min(range.x, s.x);
-            range.y = glm::max(range.y, s.y);
-            if (d >= -1 && d <= 1) {
-                range.z = glm::min(range.z, s.z);
-                range.w = glm::max(range.w, s.w);
+    const ptrdiff_t stride = axis == 0   ? 1
+                             : axis == 1 ? ptrdiff_t(res.x)
+                                         : ptrdiff_t(res.x) * ptrdiff_t(res.y);
+    const glm::vec4 empty(EK_UNLIMITED_STEP, -EK_UNLIMITED_STEP, EK_UNLIMITED_STEP,
+                          -EK_UNLIMITED_STEP);
+    const int n = res[axis];
+    tbb::parallel_for(tbb::blocked_range<int>(0, res.z), [&](const tbb::blocked_range<int>& r) {
+        for (int z = r.begin(); z != r.end(); ++z)
+            for (int y = 0; y < res.y; ++y) {
+                const size_t row = (size_t(z) * size_t(res.y) + size_t(y)) * size_t(res.x);
+                const glm::vec4* in = from.data() + row;
+                glm::vec4* out = to.data() + row;
+                if (axis == 0) {
+                    for (int x = 0; x < res.x; ++x) {
+                        glm::vec4 range = empty;
+                        for (int at = std::max(x - 2, 0); at <= std::min(x + 2, n - 1); ++at)
+                            foldLeafRange(range, in[at], at >= x - 1 && at <= x + 1);
+                        out[x] = range;
+                    }
+                    continue;
+                }
+                const int v = axis == 1 ? y : z;
+                std::fill(out, out + res.x, empty);
+                for (int at = std::max(v - 2, 0); at <= std::min(v + 2, n - 1); ++at) {
+                    const glm::vec4* source = in + ptrdiff_t(at - v) * stride;
+                    const bool inner = at >= v - 1 && at <= v + 1;
+                    for (int x = 0; x < res.x; ++x) foldLeafRange(out[x], source[x], inner);
+                }
             }
-        }
-        to[i] = range;
     });
 }
 
