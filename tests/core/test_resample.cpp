@@ -2,8 +2,10 @@
 // and the scene-level choices (auto bounds and resolution, procedural unions, missing fields).
 #include <catch2/catch.hpp>
 
+#include <cstring>
 #include <limits>
 #include <map>
+#include <random>
 
 #include "core/error.h"
 #include "core/procedural.h"
@@ -75,6 +77,73 @@ TEST_CASE("resampling follows the field's transform: a translated field gives a 
     }
     CHECK(total > 100.0);  // the sphere is there
     CHECK(worst < 1e-5);   // float rounding of the shifted sample positions only
+}
+
+TEST_CASE("resampling gives BoxSampler's samples to the bit, whatever box of grid voxels it reads",
+          "[resample]") {
+    // resampleToDense reads each slab's grid voxels into a dense box first; every sample must
+    // still be openvdb::tools::BoxSampler::sample's, for any linear transform, where the render
+    // volume reaches past the grid's voxels, and where it is coarser than the grid (too large a
+    // box: the accessor alone).
+    ensureOpenVdbInitialized();
+    auto grid = openvdb::FloatGrid::create(0.125f);  // the background shows past the voxels
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> value(-1.0f, 2.0f);
+    auto acc = grid->getAccessor();
+    for (int z = -9; z < 14; ++z)
+        for (int y = -6; y < 11; ++y)
+            for (int x = -12; x < 8; ++x) acc.setValue(openvdb::Coord(x, y, z), value(random));
+    grid->tree().setValue(openvdb::Coord(20, 0, 0), -0.0f);  // a lone voxel in another leaf
+    struct Case {
+        const char* name;
+        openvdb::math::Transform::Ptr xform;
+        RenderVolume volume;
+    };
+    auto rotated = openvdb::math::Transform::createLinearTransform(0.1);
+    rotated->postRotate(0.4, openvdb::math::Y_AXIS);
+    rotated->postRotate(-0.7, openvdb::math::X_AXIS);
+    rotated->postTranslate(openvdb::Vec3d(0.03, -0.11, 0.2));
+    auto scaled = openvdb::math::Transform::createLinearTransform(0.1);
+    scaled->preScale(openvdb::Vec3d(1.0, 0.7, 1.3));
+    scaled->postTranslate(openvdb::Vec3d(-0.017, 0.05, 0.0));
+    const Case cases[] = {
+        {"aligned",
+         openvdb::math::Transform::createLinearTransform(0.1),
+         {{glm::vec3(-1.2f, -0.6f, -0.9f), glm::vec3(0.8f, 1.1f, 1.4f)}, glm::ivec3(20, 17, 23)}},
+        {"finer, offset, past the voxels",
+         scaled,
+         {{glm::vec3(-1.7f, -0.9f, -1.6f), glm::vec3(1.1f, 1.3f, 2.2f)}, glm::ivec3(37, 29, 45)}},
+        {"rotated",
+         rotated,
+         {{glm::vec3(-1.0f, -1.0f, -1.0f), glm::vec3(1.0f, 1.0f, 1.0f)}, glm::ivec3(31, 26, 19)}},
+        {"coarser than the grid",
+         openvdb::math::Transform::createLinearTransform(0.02),
+         {{glm::vec3(-0.3f, -0.15f, -0.2f), glm::vec3(0.45f, 0.2f, 0.3f)}, glm::ivec3(9, 5, 6)}},
+        {"one plane",
+         openvdb::math::Transform::createLinearTransform(0.1),
+         {{glm::vec3(-1.0f, -0.5f, 0.0f), glm::vec3(0.5f, 0.8f, 0.1f)}, glm::ivec3(15, 13, 1)}},
+    };
+    for (const Case& c : cases) {
+        INFO(c.name);
+        grid->setTransform(c.xform);
+        Field field;
+        field.name = "density";
+        field.grid = grid;
+        const DenseGrid dense = resampleToDense(field, c.volume);
+        const auto reader = grid->getConstAccessor();
+        const glm::ivec3 res = c.volume.resolution;
+        size_t differ = 0;
+        for (int k = 0; k < res.z; ++k)
+            for (int j = 0; j < res.y; ++j)
+                for (int i = 0; i < res.x; ++i) {
+                    const glm::vec3 w = c.volume.voxelCenter(i, j, k);
+                    const float expected = openvdb::tools::BoxSampler::sample(
+                        reader, c.xform->worldToIndex(openvdb::Vec3d(w.x, w.y, w.z)));
+                    const float got = dense.values[dense.index(i, j, k)];
+                    if (std::memcmp(&expected, &got, sizeof(float)) != 0) ++differ;
+                }
+        CHECK(differ == 0);
+    }
 }
 
 TEST_CASE("procedural shapes on one field form a union, mismatched voxels are an error",
