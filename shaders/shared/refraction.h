@@ -33,6 +33,15 @@ float refractiveIndexAtVoxel(ivec3 v) {
     return n;
 }
 
+// n at voxel centres for gradientAtVoxel: refractiveIndexAtVoxel itself, or (EK_INDEX_VOLUME, the
+// CPU twin) the includer's `float indexVolumeAt(ivec3 voxel)`, its values computed once a voxel
+// beforehand: seven evaluations a voxel become one.
+#ifdef EK_INDEX_VOLUME
+#define EK_INDEX_AT_VOXEL indexVolumeAt
+#else
+#define EK_INDEX_AT_VOXEL refractiveIndexAtVoxel
+#endif
+
 // xyz: ∇n in scene units (per world unit along each axis); w: n, both at the centre of voxel v.
 // Central differences of n at the neighbouring voxel centres; one-sided at the volume's faces,
 // where the outer neighbour does not exist (clamping it would halve the gradient there). An axis
@@ -47,8 +56,9 @@ vec4 gradientAtVoxel(ivec3 v) {
         lo[a] = max(v[a] - 1, 0);
         hi[a] = min(v[a] + 1, res[a] - 1);
         if (hi[a] == lo[a]) continue;
-        const float dn = refractiveIndexAtVoxel(hi) - refractiveIndexAtVoxel(lo);
+        const float dn = EK_INDEX_AT_VOXEL(hi) - EK_INDEX_AT_VOXEL(lo);
         grad[a] = dn / (float(hi[a] - lo[a]) * h[a]);
     }
-    return vec4(grad, refractiveIndexAtVoxel(v));
+    return vec4(grad, EK_INDEX_AT_VOXEL(v));
 }
+#undef EK_INDEX_AT_VOXEL
