@@ -11,10 +11,11 @@
 EK_NAMESPACE_BEGIN
 
 // What shaders/refraction_gradient.comp sees: the field volumes and the params; and n at every
-// voxel centre, refractiveIndexAtVoxel's floats computed once a voxel (computeIndexGradientCpu).
+// voxel centre, refractiveIndexAtVoxel's floats computed once a voxel into w of a volume
+// (computeIndexGradientCpu).
 struct RefractionKernelCpu : VolumeAccessCpu {
-    const float* indexVolume = nullptr;
-    float indexVolumeAt(ivec3 v) const { return indexVolume[voxelIndex(v)]; }
+    const vec4* indexVolume = nullptr;
+    float indexVolumeAt(ivec3 v) const { return indexVolume[voxelIndex(v)].w; }
 #define EK_INDEX_VOLUME
 #include "shaders/shared/refraction.h"
 #undef EK_INDEX_VOLUME
@@ -212,11 +213,20 @@ RefractionVolumeCpu computeIndexGradientCpu(const ViewSetup& setup,
     for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
     const glm::ivec3 res = resolutionOf(setup);
     RefractionVolumeCpu out(size_t(res.x) * size_t(res.y) * size_t(res.z));
-    // n once a voxel, for the seven reads of gradientAtVoxel (the ∇n stage at 128³: 1.5× faster).
-    std::vector<float> index(out.size());
-    forEachVoxel(res, [&](glm::ivec3 v, size_t i) { index[i] = kernel.refractiveIndexAtVoxel(v); });
-    kernel.indexVolume = index.data();
-    forEachVoxel(res, [&](glm::ivec3 v, size_t i) { out[i] = kernel.gradientAtVoxel(v); });
+    // n once a voxel, for the seven reads of gradientAtVoxel (the ∇n stage at 128³: 1.5× faster),
+    // kept in the output's w, which is n: no volume of its own, whose pages would fault in a 64³
+    // render as long as the time it saves. The second pass writes x, y, z alone, so the w its
+    // neighbours read is never written while read.
+    forEachVoxel(res, [&](glm::ivec3 v, size_t i) {
+        out[i] = glm::vec4(0.0f, 0.0f, 0.0f, kernel.refractiveIndexAtVoxel(v));
+    });
+    kernel.indexVolume = out.data();
+    forEachVoxel(res, [&](glm::ivec3 v, size_t i) {
+        const glm::vec4 g = kernel.gradientAtVoxel(v);
+        out[i].x = g.x;
+        out[i].y = g.y;
+        out[i].z = g.z;
+    });
     return out;
 }
 
