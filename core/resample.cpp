@@ -223,6 +223,16 @@ DenseGrid resampleToDense(const Field& field, const RenderVolume& volume) {
     const glm::ivec3 res = volume.resolution;
     std::atomic<bool> nonFinite{false};
     const openvdb::math::Transform& xform = grid->transform();
+    // Transform::worldToIndex calls its map through a virtual function; a scale-and-translate map
+    // (what OpenVDB, Houdini and Blender write) is called here directly, the same function inlined.
+    auto scaleTranslate = xform.constMap<openvdb::math::ScaleTranslateMap>();
+    const auto uniform = xform.constMap<openvdb::math::UniformScaleTranslateMap>();
+    const openvdb::math::ScaleTranslateMap* direct =
+        scaleTranslate ? scaleTranslate.get() : uniform.get();
+    // voxelCenter's voxel size, once: the same floats, where the loop below would take its
+    // divisions for every voxel (the compiler cannot tell that the stores leave `volume` alone).
+    const glm::vec3 voxel = volume.voxelSize();
+    const glm::vec3 origin = volume.bounds.min;
 
     // In slabs of 4-8 planes, each with the box of grid voxels it reads (a frustum transform's
     // slabs read the accessor alone).
@@ -237,16 +247,22 @@ DenseGrid resampleToDense(const Field& field, const RenderVolume& volume) {
                 const size_t slabVoxels = size_t(res.x) * size_t(res.y) * size_t(r.size());
                 box.copy(acc, lo, hi, 4 * slabVoxels + 4096);
             }
+            float* values = out.values.data();
+            bool anyNonFinite = false;
             for (int k = r.begin(); k != r.end(); ++k)
                 for (int j = 0; j < res.y; ++j)
                     for (int i = 0; i < res.x; ++i) {
-                        const glm::vec3 w = volume.voxelCenter(i, j, k);
+                        const glm::vec3 w = origin + (glm::vec3(i, j, k) + 0.5f) * voxel;
+                        const openvdb::Vec3d world(w.x, w.y, w.z);
                         const openvdb::Vec3d ijk =
-                            xform.worldToIndex(openvdb::Vec3d(w.x, w.y, w.z));
+                            direct
+                                ? direct->openvdb::math::ScaleTranslateMap::applyInverseMap(world)
+                                : xform.worldToIndex(world);
                         const float v = box.sample(acc, ijk);
-                        if (!std::isfinite(v)) nonFinite = true;
-                        out.values[out.index(i, j, k)] = v;
+                        anyNonFinite = anyNonFinite || !std::isfinite(v);
+                        values[out.index(i, j, k)] = v;
                     }
+            if (anyNonFinite) nonFinite = true;
         },
         tbb::simple_partitioner());
     if (nonFinite) {

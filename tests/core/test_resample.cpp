@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <memory>
 #include <random>
 
 #include "core/error.h"
@@ -106,7 +107,22 @@ TEST_CASE("resampling gives BoxSampler's samples to the bit, whatever box of gri
     auto scaled = openvdb::math::Transform::createLinearTransform(0.1);
     scaled->preScale(openvdb::Vec3d(1.0, 0.7, 1.3));
     scaled->postTranslate(openvdb::Vec3d(-0.017, 0.05, 0.0));
+    // The maps OpenVDB, Houdini and Blender write, which resampleToDense calls directly.
+    const auto uniformShift = openvdb::math::Transform::Ptr(
+        new openvdb::math::Transform(std::make_shared<openvdb::math::UniformScaleTranslateMap>(
+            0.1, openvdb::Vec3d(0.013, -0.2, 0.05))));
+    const auto scaleShift = openvdb::math::Transform::Ptr(
+        new openvdb::math::Transform(std::make_shared<openvdb::math::ScaleTranslateMap>(
+            openvdb::Vec3d(0.1, 0.07, 0.13), openvdb::Vec3d(-0.017, 0.05, 0.0))));
+    REQUIRE(uniformShift->mapType() == openvdb::math::UniformScaleTranslateMap::mapType());
+    REQUIRE(scaleShift->mapType() == openvdb::math::ScaleTranslateMap::mapType());
     const Case cases[] = {
+        {"uniform scale and translation",
+         uniformShift,
+         {{glm::vec3(-1.2f, -0.6f, -0.9f), glm::vec3(0.8f, 1.1f, 1.4f)}, glm::ivec3(23, 17, 29)}},
+        {"scale and translation",
+         scaleShift,
+         {{glm::vec3(-1.7f, -0.9f, -1.6f), glm::vec3(1.1f, 1.3f, 2.2f)}, glm::ivec3(37, 29, 45)}},
         {"aligned",
          openvdb::math::Transform::createLinearTransform(0.1),
          {{glm::vec3(-1.2f, -0.6f, -0.9f), glm::vec3(0.8f, 1.1f, 1.4f)}, glm::ivec3(20, 17, 23)}},
