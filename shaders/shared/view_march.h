@@ -17,18 +17,21 @@
 // irradiance is not complete yet. Both are true and false in the view pass (view.comp and its
 // twin); the plane sweep's interleaved view (view_interleaved.comp and its twin) waits and defers.
 
-// Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0.
-float stepWeight(float kappa, float s) {
-    return kappa * s > 1e-5f ? (1.0f - exp(-kappa * s)) / kappa : s * (1.0f - 0.5f * kappa * s);
+// Integral of e^(−κ s) over a step of length s: (1 − e^(−κ s)) / κ, and s as κ → 0; `decay` is
+// e^(−κ s), the step's transmittance, which the step takes anyway (one exp for both: a C++
+// compiler may not merge two calls of exp, which may set errno).
+float stepWeight(float kappa, float s, float decay) {
+    return kappa * s > 1e-5f ? (1.0f - decay) / kappa : s * (1.0f - 0.5f * kappa * s);
 }
 
-// stepWeight for each channel. In C++ (the CPU twins) a grey κ takes one for all three, as
-// channelDecay (optics.h) takes one exp.
-vec3 stepWeights(vec3 kappa, float s) {
+// stepWeight for each channel, decay = channelDecay(kappa, s). In C++ (the CPU twins) a grey κ
+// takes one for all three, as channelDecay (optics.h) takes one exp.
+vec3 stepWeights(vec3 kappa, float s, vec3 decay) {
 #ifdef __cplusplus
-    if (kappa.x == kappa.y && kappa.x == kappa.z) return vec3(stepWeight(kappa.x, s));
+    if (kappa.x == kappa.y && kappa.x == kappa.z) return vec3(stepWeight(kappa.x, s, decay.x));
 #endif
-    return vec3(stepWeight(kappa.x, s), stepWeight(kappa.y, s), stepWeight(kappa.z, s));
+    return vec3(stepWeight(kappa.x, s, decay.x), stepWeight(kappa.y, s, decay.y),
+                stepWeight(kappa.z, s, decay.z));
 }
 
 // Light scattered toward the camera (along −dir) at volume index position p from the fluence
@@ -222,8 +225,9 @@ EK_FORCE_INLINE bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(
             source += scattered * irradiance * lightShadow(l, x, p, toLight, lightDistance);
         }
     }
-    radiance += transmittance * source * stepWeights(kappa, s);
-    transmittance *= channelDecay(kappa, s);
+    const vec3 decay = channelDecay(kappa, s);
+    radiance += transmittance * source * stepWeights(kappa, s, decay);
+    transmittance *= decay;
     if (max(max(transmittance.x, transmittance.y), transmittance.z) < minTransmittance(params)) {
         transmittance = vec3(0.0f);  // what is left is below the cut-off the scene set
         return false;

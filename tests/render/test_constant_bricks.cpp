@@ -165,15 +165,19 @@ TEST_CASE("a grey κ's one exp and the isotropic phase function give the per-cha
         const glm::vec3 kappa(k);
         for (size_t j = i % 7; j < lengths.size(); j += 7) {
             const float s = lengths[j];
-            // What the GPU computes (the #else paths): each channel on its own.
+            // What the GPU computes (the #else paths): each channel on its own. The step's
+            // weight is (1 − e^(−κs)) / κ with its own exp, as it was written before it took the
+            // step's decay.
             const glm::vec3 decay = glm::exp(-kappa * s);
-            const glm::vec3 weights(view.stepWeight(k, s), view.stepWeight(k, s),
-                                    view.stepWeight(k, s));
+            const float weight =
+                k * s > 1e-5f ? (1.0f - std::exp(-k * s)) / k : s * (1.0f - 0.5f * k * s);
+            const glm::vec3 weights(weight);
             const glm::vec3 integrals(photons.photonDecayIntegral(k, s),
                                       photons.photonDecayIntegral(k, s),
                                       photons.photonDecayIntegral(k, s));
             if (!sameBits(view.channelDecay(kappa, s), decay)) ++mismatches;
-            if (!sameBits(view.stepWeights(kappa, s), weights)) ++mismatches;
+            if (!sameBits(view.stepWeights(kappa, s, view.channelDecay(kappa, s)), weights))
+                ++mismatches;
             if (!sameBits(photons.photonDecayIntegrals(kappa, s), integrals)) ++mismatches;
         }
     }
@@ -181,6 +185,11 @@ TEST_CASE("a grey κ's one exp and the isotropic phase function give the per-cha
     // Not grey: each channel its own, as on the GPU.
     const glm::vec3 coloured(1.8f, 1.75f, 1.7f);
     CHECK(sameBits(view.channelDecay(coloured, 0.3f), glm::exp(-coloured * 0.3f)));
+    glm::vec3 colouredWeights;
+    for (int c = 0; c < 3; ++c)
+        colouredWeights[c] = (1.0f - std::exp(-coloured[c] * 0.3f)) / coloured[c];
+    CHECK(sameBits(view.stepWeights(coloured, 0.3f, view.channelDecay(coloured, 0.3f)),
+                   colouredWeights));
 
     // phaseHG as the GPU computes it, for g = ±0 and every cosine.
     const auto phaseAsWritten = [](float g, float cosTheta) {
