@@ -23,6 +23,8 @@
 // Takes a trilinear sample in a brick where its volume holds one value without fetching the eight
 // corners (shaders/shared/sampling.h; render/constant_bricks.h): only here, with the same floats.
 #define EK_CONSTANT_BRICKS
+// volumeVoxelSize (sampling.h) returns the kernel's voxelSize, computed once when it is made.
+#define EK_VOXEL_SIZE_MEMBER
 
 EK_NAMESPACE_BEGIN
 
@@ -98,6 +100,10 @@ struct VolumeAccessCpu {
 #include "shaders/shared/receivers.h"
 #include "shaders/shared/ray_equation.h"
     // clang-format on
+
+    // volumeVoxelSize's value, once: declared after params, so initialized after it. params
+    // must not change while the kernel lives (every kernel is made for one pass).
+    const vec3 voxelSize = EK_VOXEL_SIZE_OF(params);
 };
 
 struct ViewKernelCpu : VolumeAccessCpu {

@@ -10,8 +10,20 @@ ivec3 volumeResolution() {
     return ivec3(params.resolution.x, params.resolution.y, params.resolution.z);
 }
 
+// The edge of a voxel along each axis, in scene units, of the volume params p describe.
+#define EK_VOXEL_SIZE_OF(p)                        \
+    ((vec3((p).volumeMax) - vec3((p).volumeMin)) / \
+     vec3(ivec3((p).resolution.x, (p).resolution.y, (p).resolution.z)))
+
 vec3 volumeVoxelSize() {
-    return (vec3(params.volumeMax) - vec3(params.volumeMin)) / vec3(volumeResolution());
+#ifdef EK_VOXEL_SIZE_MEMBER
+    // CPU twins (render/volume_kernels_cpu.h): the includer's `voxelSize`, EK_VOXEL_SIZE_OF(params)
+    // taken once. The twins read params through a reference, which any float store might change
+    // as far as the compiler knows, so a call took its three divisions every time.
+    return voxelSize;
+#else
+    return EK_VOXEL_SIZE_OF(params);
+#endif
 }
 
 vec3 worldToVolumeIndex(vec3 world) {
