@@ -84,8 +84,8 @@ inline void foldLeafRange(glm::vec4& range, const glm::vec4& s, bool inner) {
 // exact and the windows are boxes, so three passes give the 5³ and 3³ windows' very floats. A
 // clamped voxel repeats the face's, which changes neither a min nor a max nor which of equal
 // values comes first: the window is cut at the face instead. Row by row along x; across rows
-// (axis 1, 2) each row of the window is folded into the whole output row in turn, which the
-// compiler vectorizes (a voxel at a time, with a clamp per offset, took 3/4 of the octree stage).
+// (axis 1, 2) each row of the window is folded into the whole output row in turn, a loop over
+// contiguous voxels (a voxel at a time, with a clamp per offset, took 3/4 of the octree stage).
 void leafRangePass(glm::ivec3 res, int axis, const std::vector<glm::vec4>& from,
                    std::vector<glm::vec4>& to) {
     const ptrdiff_t stride = axis == 0   ? 1
@@ -213,7 +213,7 @@ RefractionVolumeCpu computeIndexGradientCpu(const ViewSetup& setup,
     for (size_t s = 0; s < slotGrids.size(); ++s) kernel.fields[s] = slotGrids[s]->values.data();
     const glm::ivec3 res = resolutionOf(setup);
     RefractionVolumeCpu out(size_t(res.x) * size_t(res.y) * size_t(res.z));
-    // n once a voxel, for the seven reads of gradientAtVoxel (the ∇n stage at 128³: 1.5× faster),
+    // n once a voxel, for the seven reads of gradientAtVoxel (the ∇n stage at 128³: 1.8× faster),
     // kept in the output's w, which is n: no volume of its own, whose pages would fault in a 64³
     // render as long as the time it saves. The second pass writes x, y, z alone, so the w its
     // neighbours read is never written while read.
