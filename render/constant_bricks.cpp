@@ -27,9 +27,9 @@ uint32_t wordAt(const unsigned char* bytes, size_t word) {
 }
 
 // Whether every voxel in [lo, hi] (inclusive) of a volume of `words` 32-bit words a voxel holds
-// the bits of voxel lo. The words of each row are compared without a branch and each row decides:
-// at 111×222×112 (the Houdini smoke) a compare of a vec4 at a time took 20 ms of the view pass
-// for the density and the light volume, most of it in the bricks of zeros that scan all 125.
+// the bits of voxel lo. The words of each row are compared without a branch and each row decides,
+// where a vec4 a voxel went through memcmp: the Houdini smoke's view pass (111×222×112, the
+// density and the light volume) took 413.5 -> 396.4 ms on one core (BENCHMARKS.md).
 template <int kWords>
 bool sameBitsOver(const unsigned char* bytes, glm::ivec3 res, glm::ivec3 lo, glm::ivec3 hi) {
     const auto voxelIndex = [&](int x, int y, int z) {
