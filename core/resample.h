@@ -23,10 +23,20 @@ RenderVolume chooseRenderVolume(const Scene& scene, const FieldRegistry& fields,
 // Voxels along the longest axis of an automatic volume of meshes alone (Sun et al.'s 128³).
 constexpr int kMeshVoxelsAcross = 128;
 
-// Trilinear samples of a scalar field at the centres of the volume's voxels, in parallel with a
-// result that does not depend on the thread count. Throws eikon::Error (at the field's origin)
-// when a sample is NaN or infinite.
-DenseGrid resampleToDense(const Field& field, const RenderVolume& volume);
+// Which compiled copy of resampleToDense's loop runs. Auto: the AVX2 copy where resampleRunsAvx2,
+// else the baseline x86-64 copy; Baseline: that one. Both give BoxSampler::sample's floats to the
+// bit.
+enum class ResampleCopy { Auto, Baseline };
+
+// Whether ResampleCopy::Auto runs the AVX2 copy here: an x86-64 processor with AVX2, a build
+// without sanitizers, and EIKON_CPU_AVX2 not 0 (as for the view, render/frame_renderer.cpp).
+bool resampleRunsAvx2();
+
+// Trilinear samples of a scalar field at the centres of the volume's voxels (OpenVDB's
+// BoxSampler::sample, to the bit), in parallel with a result that does not depend on the thread
+// count. Throws eikon::Error (at the field's origin) when a sample is NaN or infinite.
+DenseGrid resampleToDense(const Field& field, const RenderVolume& volume,
+                          ResampleCopy copy = ResampleCopy::Auto);
 
 // The refractive index the linear materials make of the resampled fields, n = 1 + Σ f·(ior − 1),
 // must be >= 1 at every voxel: a field a material with ior > 1 reads must not go negative there.

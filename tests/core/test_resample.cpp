@@ -80,8 +80,10 @@ TEST_CASE("resampling follows the field's transform: a translated field gives a 
     CHECK(worst < 1e-5);   // float rounding of the shifted sample positions only
 }
 
-TEST_CASE("resampling gives BoxSampler's samples to the bit, whatever box of grid voxels it reads",
-          "[resample]") {
+TEST_CASE(
+    "resampling gives BoxSampler's samples to the bit, whatever box of grid voxels it reads "
+    "and in both compiled copies",
+    "[resample]") {
     // resampleToDense reads each slab's grid voxels into a dense box first; every sample must
     // still be openvdb::tools::BoxSampler::sample's, for any linear transform, where the render
     // volume reaches past the grid's voxels, and where it is coarser than the grid (too large a
@@ -139,27 +141,33 @@ TEST_CASE("resampling gives BoxSampler's samples to the bit, whatever box of gri
          openvdb::math::Transform::createLinearTransform(0.1),
          {{glm::vec3(-1.0f, -0.5f, 0.0f), glm::vec3(0.5f, 0.8f, 0.1f)}, glm::ivec3(15, 13, 1)}},
     };
-    for (const Case& c : cases) {
-        INFO(c.name);
-        grid->setTransform(c.xform);
-        Field field;
-        field.name = "density";
-        field.grid = grid;
-        const DenseGrid dense = resampleToDense(field, c.volume);
-        const auto reader = grid->getConstAccessor();
-        const glm::ivec3 res = c.volume.resolution;
-        size_t differ = 0;
-        for (int k = 0; k < res.z; ++k)
-            for (int j = 0; j < res.y; ++j)
-                for (int i = 0; i < res.x; ++i) {
-                    const glm::vec3 w = c.volume.voxelCenter(i, j, k);
-                    const float expected = openvdb::tools::BoxSampler::sample(
-                        reader, c.xform->worldToIndex(openvdb::Vec3d(w.x, w.y, w.z)));
-                    const float got = dense.values[dense.index(i, j, k)];
-                    if (std::memcmp(&expected, &got, sizeof(float)) != 0) ++differ;
-                }
-        CHECK(differ == 0);
-    }
+    if (!resampleRunsAvx2())
+        WARN(
+            "no AVX2 copy here (not x86-64 with AVX2, a sanitizer build, or EIKON_CPU_AVX2=0): "
+            "both copies below run the baseline");
+    for (const ResampleCopy copy : {ResampleCopy::Auto, ResampleCopy::Baseline})
+        for (const Case& c : cases) {
+            INFO(c.name << (copy == ResampleCopy::Auto ? " (the AVX2 copy where it runs)"
+                                                       : " (the baseline copy)"));
+            grid->setTransform(c.xform);
+            Field field;
+            field.name = "density";
+            field.grid = grid;
+            const DenseGrid dense = resampleToDense(field, c.volume, copy);
+            const auto reader = grid->getConstAccessor();
+            const glm::ivec3 res = c.volume.resolution;
+            size_t differ = 0;
+            for (int k = 0; k < res.z; ++k)
+                for (int j = 0; j < res.y; ++j)
+                    for (int i = 0; i < res.x; ++i) {
+                        const glm::vec3 w = c.volume.voxelCenter(i, j, k);
+                        const float expected = openvdb::tools::BoxSampler::sample(
+                            reader, c.xform->worldToIndex(openvdb::Vec3d(w.x, w.y, w.z)));
+                        const float got = dense.values[dense.index(i, j, k)];
+                        if (std::memcmp(&expected, &got, sizeof(float)) != 0) ++differ;
+                    }
+            CHECK(differ == 0);
+        }
 }
 
 TEST_CASE("procedural shapes on one field form a union, mismatched voxels are an error",
