@@ -10,6 +10,19 @@ float gaussianBlurWeight(int d, float sigma) {
     return exp(-float(d * d) / (2.0f * sigma * sigma));
 }
 
+// gaussianBlurWeight(d, sigma). In the CPU twin (EK_BLUR_WEIGHT_TABLE) the includer's
+// `blurWeights[d]`, which holds those floats (d in [−radius, radius]: it points at the middle one),
+// taken once a blur: an exp a tap was nine tenths of the twin's blur (BENCHMARKS.md, "The mesh
+// blur").
+float blurTapWeight(int d, float sigma) {
+#ifdef EK_BLUR_WEIGHT_TABLE
+    static_cast<void>(sigma);  // the table's weights were taken with it
+    return blurWeights[d];
+#else
+    return gaussianBlurWeight(d, sigma);
+#endif
+}
+
 float gaussianBlurAlongAxis(ivec3 v, ivec3 res, int axis, float sigma, int radius) {
     float sum = 0.0f;
     float weightSum = 0.0f;
@@ -17,7 +30,7 @@ float gaussianBlurAlongAxis(ivec3 v, ivec3 res, int axis, float sigma, int radiu
         ivec3 n = v;
         n[axis] += d;
         if (n[axis] < 0 || n[axis] >= res[axis]) continue;
-        const float w = gaussianBlurWeight(d, sigma);
+        const float w = blurTapWeight(d, sigma);
         sum += w * fetchUnblurred(n);
         weightSum += w;
     }

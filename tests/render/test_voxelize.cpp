@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include <epoxy/gl.h>
 #include <glm/geometric.hpp>
@@ -14,8 +15,22 @@
 #include "core/mesh_primitives.h"
 #include "render/gl_context.h"
 #include "render/voxelize.h"
+#include "shaders/shared/platform.h"
 
 using namespace eikon;
+
+// The shared blur as the GPU runs it, an exp a tap (no EK_BLUR_WEIGHT_TABLE here): the reference
+// for the twin's table of weights.
+EK_NAMESPACE_BEGIN
+struct BlurWithExpsCpu {
+    const float* source;
+    ivec3 res;
+    float fetchUnblurred(ivec3 v) const {
+        return source[(size_t(v.z) * size_t(res.y) + size_t(v.y)) * size_t(res.x) + size_t(v.x)];
+    }
+#include "shaders/shared/gaussian_blur.h"
+};
+EK_NAMESPACE_END
 
 namespace {
 
@@ -198,6 +213,36 @@ TEST_CASE("the blur keeps a constant, spreads an impulse by the Gaussian, and ke
     double total = 0.0;
     for (float v : blurred) total += double(v);
     CHECK(total == Approx(1.0).epsilon(1e-5));
+}
+
+TEST_CASE("the twin's blur, with its weights taken once, gives an exp a tap's floats to the bit",
+          "[voxelize]") {
+    const glm::ivec3 res(13, 6, 17);  // y shorter than the default window: renormalized everywhere
+    std::vector<float> coverage(size_t(res.x * res.y * res.z));
+    uint32_t state = 12345u;
+    for (float& c : coverage) {
+        state = state * 1664525u + 1013904223u;
+        c = float(state >> 8) / float(1u << 24);
+    }
+    for (const IndexBlurSettings settings :
+         {IndexBlurSettings{}, IndexBlurSettings{0.8f, 2}, IndexBlurSettings{2.3f, 7}}) {
+        INFO("sigma " << settings.sigmaVoxels << ", radius " << settings.radiusVoxels);
+        std::vector<float> a = coverage, b(coverage.size());
+        for (int axis = 0; axis < 3; ++axis) {
+            shared::BlurWithExpsCpu kernel{a.data(), res};
+            for (int z = 0; z < res.z; ++z)
+                for (int y = 0; y < res.y; ++y)
+                    for (int x = 0; x < res.x; ++x)
+                        b[(size_t(z) * size_t(res.y) + size_t(y)) * size_t(res.x) + size_t(x)] =
+                            kernel.gaussianBlurAlongAxis(glm::ivec3(x, y, z), res, axis,
+                                                         settings.sigmaVoxels,
+                                                         settings.radiusVoxels);
+            std::swap(a, b);
+        }
+        const std::vector<float> twin = blurCoverageCpu(coverage, res, settings);
+        REQUIRE(twin.size() == a.size());
+        CHECK(std::memcmp(twin.data(), a.data(), a.size() * sizeof(float)) == 0);
+    }
 }
 
 TEST_CASE("bad meshes are rejected naming the mesh", "[voxelize]") {
