@@ -25,37 +25,8 @@
 #define EK_CONSTANT_BRICKS
 // volumeVoxelSize (sampling.h) returns the kernel's voxelSize, computed once when it is made.
 #define EK_VOXEL_SIZE_MEMBER
-// sampleVolume's trilinear mixes (sampling.h) through trilinearMix below, four lanes at a time.
-#define EK_VECTOR_MIX
 
 EK_NAMESPACE_BEGIN
-
-// The eight-corner mix of sampleVolume (sampling.h) on 4-lane vectors. GLM computes a vec4 a
-// component at a time: the twins' view pass ran three vmulss for every vmulps, and a sample's
-// seven mixes were 84 scalar operations. glm::mix(x, y, a) is x·(1 − a) + y·a; each lane here
-// takes those same operations (no FMA: the twins are compiled without contraction), so the floats
-// are glm's.
-typedef float MixLanes __attribute__((vector_size(16), aligned(4)));
-EK_FORCE_INLINE inline MixLanes mixLanes(MixLanes x, MixLanes y, float a) {
-    return x * (1.0f - a) + y * a;
-}
-EK_FORCE_INLINE inline MixLanes toMixLanes(const vec4& v) {
-    MixLanes lanes;
-    __builtin_memcpy(&lanes, &v, sizeof(lanes));
-    return lanes;
-}
-EK_FORCE_INLINE inline vec4 trilinearMix(const vec4& c000, const vec4& c100, const vec4& c010,
-                                         const vec4& c110, const vec4& c001, const vec4& c101,
-                                         const vec4& c011, const vec4& c111, vec3 f) {
-    const MixLanes c00 = mixLanes(toMixLanes(c000), toMixLanes(c100), f.x);
-    const MixLanes c10 = mixLanes(toMixLanes(c010), toMixLanes(c110), f.x);
-    const MixLanes c01 = mixLanes(toMixLanes(c001), toMixLanes(c101), f.x);
-    const MixLanes c11 = mixLanes(toMixLanes(c011), toMixLanes(c111), f.x);
-    const MixLanes mixed = mixLanes(mixLanes(c00, c10, f.y), mixLanes(c01, c11, f.y), f.z);
-    vec4 out;
-    __builtin_memcpy(&out, &mixed, sizeof(out));
-    return out;
-}
 
 // What volume_bindings.glsl gives the shaders: field values and light transmittances by slot.
 struct VolumeAccessCpu {

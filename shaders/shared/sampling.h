@@ -66,16 +66,11 @@ EK_FORCE_INLINE vec4 sampleVolume(int slot, vec3 indexPos) {
     const vec4 c101 = fetchVolume(slot, ivec3(i1.x, i0.y, i1.z));
     const vec4 c011 = fetchVolume(slot, ivec3(i0.x, i1.y, i1.z));
     const vec4 c111 = fetchVolume(slot, ivec3(i1.x, i1.y, i1.z));
-#ifdef EK_VECTOR_MIX
-    // CPU twins (render/volume_kernels_cpu.h): the mixes below, four lanes at a time.
-    return trilinearMix(c000, c100, c010, c110, c001, c101, c011, c111, f);
-#else
     const vec4 c00 = mix(c000, c100, f.x);
     const vec4 c10 = mix(c010, c110, f.x);
     const vec4 c01 = mix(c001, c101, f.x);
     const vec4 c11 = mix(c011, c111, f.x);
     return mix(mix(c00, c10, f.y), mix(c01, c11, f.y), f.z);
-#endif
 }
 #endif
 

@@ -86,13 +86,12 @@ std::vector<Variant> variants() {
 }
 
 // Switches the shaders test that only C++ includers set (the shared headers' type-only parts, the
-// CPU twin's empty-space steps, constant bricks, index volume, voxel size, blur weights and vector
-// mixes) or that a shader defines itself.
-const std::set<std::string> kNotVariants = {"EK_PHOTON_TYPES_ONLY",      "EK_WAVEFRONT_TYPES_ONLY",
-                                            "EK_PLANE_SWEEP_TYPES_ONLY", "EK_OCTREE_LEAF_RANGE",
-                                            "EK_SKIP_EMPTY_SPACE",       "EK_CONSTANT_BRICKS",
-                                            "EK_INDEX_VOLUME",           "EK_VOXEL_SIZE_MEMBER",
-                                            "EK_BLUR_WEIGHT_TABLE",      "EK_VECTOR_MIX"};
+// CPU twin's empty-space steps, constant bricks, index volume, voxel size and blur weights) or
+// that a shader defines itself.
+const std::set<std::string> kNotVariants = {
+    "EK_PHOTON_TYPES_ONLY", "EK_WAVEFRONT_TYPES_ONLY", "EK_PLANE_SWEEP_TYPES_ONLY",
+    "EK_OCTREE_LEAF_RANGE", "EK_SKIP_EMPTY_SPACE",     "EK_CONSTANT_BRICKS",
+    "EK_INDEX_VOLUME",      "EK_VOXEL_SIZE_MEMBER",    "EK_BLUR_WEIGHT_TABLE"};
 
 // Runs a command, returning its exit status and its output (stdout and stderr).
 int run(const std::string& command, std::string& output) {
