@@ -264,7 +264,7 @@ bool resampleSlabBaseline(const ResampleJob& job, int k0, int k1) {
 }
 
 // The same loop compiled for AVX2, as the view's (render/view_pass_cpu.cpp): SSE4.1's roundsd
-// takes the floors that baseline x86-64 computes in a dozen instructions, and VEX's three
+// takes the floors that baseline x86-64 computes with masks and compares, and VEX's three
 // operands save moves. No FMA is enabled, so every operation rounds as in the baseline copy
 // (tests/core/test_resample.cpp holds both to BoxSampler::sample by memcmp). The smoke's resample
 // stage took 52.6 -> 42.1 ms on two cores (BENCHMARKS.md). Not under the sanitizers, as the view.

@@ -36,10 +36,9 @@ namespace {
 // inside the volume along the axis take their taps a row at a time, sums[x] += w[d] · tap[x] for
 // d = −radius … radius: each voxel's sum is gaussianBlurAlongAxis's, the same products added in
 // the same order, and so is the weight sum it divides by, so the floats are the same
-// (tests/render/test_voxelize.cpp holds them to an exp a tap by memcmp). Without the per-tap
-// index arithmetic and face checks, and with the rows' adds vectorized, the mesh blur at 128³
-// took a third of the time (BENCHMARKS.md, "The mesh blur"). The voxels within a radius of a face
-// call the shared function, which leaves out the missing taps.
+// (tests/render/test_voxelize.cpp holds them to an exp a tap by memcmp). With the weight table,
+// the mesh blur at 128³ went from 110-115 to 7.8 ms (BENCHMARKS.md, "The mesh blur 14×"). The
+// voxels within a radius of a face call the shared function, which leaves out the missing taps.
 void blurPass(shared::BlurKernelCpu& kernel, float* out, int axis,
               const IndexBlurSettings& settings) {
     const glm::ivec3 res = kernel.res;
