@@ -24,6 +24,12 @@ vec3 channelDecay(vec3 kappa, float s) {
 // Henyey–Greenstein phase function, normalised over the sphere; cosTheta is the cosine between
 // the direction light travels and the direction it scatters into.
 float phaseHG(float g, float cosTheta) {
+#ifdef __cplusplus
+    // C++ (the CPU twins): for g = ±0 and a finite cosine, d below is 1 exactly and the formula
+    // gives 1/(4π) as written, the same float, without its root and division. Smoke and fog
+    // scatter isotropically, and the view takes this at every step that scatters.
+    if (g == 0.0f && std::isfinite(cosTheta)) return 1.0f / (4.0f * EK_PI);
+#endif
     const float d = 1.0f + g * g - 2.0f * g * cosTheta;
     return (1.0f - g * g) / (4.0f * EK_PI * d * sqrt(d));
 }
