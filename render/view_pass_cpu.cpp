@@ -99,7 +99,8 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
         if (options.skipEmptySpace) {
             bricks = findEmptyBricks(glm::ivec3(p.resolution), fields,
                                      shared::curvedRays(p) ? grad.data() : nullptr);
-            kernel.emptyBricks = bricks.empty.data();
+            // Null where none is empty: curved steps then skip looking (anyEmptyBricks).
+            kernel.emptyBricks = bricks.emptyCount() > 0 ? bricks.empty.data() : nullptr;
             kernel.emptyBrickCount = bricks.count;
         }
         if (options.constantBricks) {

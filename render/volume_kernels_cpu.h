@@ -151,9 +151,10 @@ struct ViewKernelCpu : VolumeAccessCpu {
     }
 
     // The empty bricks (render/empty_bricks.h) the view may step through without sampling them;
-    // null: none, every step is taken in full.
+    // null where none is empty: every step is taken in full.
     const uint8_t* emptyBricks = nullptr;
     ivec3 emptyBrickCount = ivec3(0);
+    bool anyEmptyBricks() const { return emptyBricks != nullptr; }
     // The index of the empty brick that holds volume index position p; −1 where that brick is not
     // empty, or p is outside the volume (or NaN).
     int emptyBrickAt(vec3 p) const {

@@ -238,8 +238,10 @@ EK_FORCE_INLINE bool accumulateStep(vec3 x, vec3 p, vec3 dir, float s, EK_INOUT(
 #ifdef EK_SKIP_EMPTY_SPACE
 // Empty space (CPU twin only; render/empty_bricks.h): where the includer's
 // `int emptyBrickAt(vec3 indexPos)` finds the brick around a step empty (≥ 0: its index; −1: not
-// empty), every field is zero and ∇n is +0 for every sample the step takes. These two functions
-// give the full step's floats without taking those samples.
+// empty), every field is zero and ∇n is +0 for every sample the step takes; `bool
+// anyEmptyBricks()` says whether there is one at all (a fog that fills the volume leaves none, and
+// a curved step then spends nothing looking). These two functions give the full step's floats
+// without taking those samples.
 
 // accumulateStep over a step where every field is zero: no κ, no source, so the radiance gains
 // transmittance × 0 × s = +0 and the transmittance keeps its value (× e^0 = × 1); the cut-off is
@@ -259,7 +261,7 @@ bool accumulateEmptyStep(EK_INOUT(vec3) radiance, EK_INOUT(vec3) transmittance) 
 bool emptyVerletStep(vec3 x, vec3 v, float h, EK_OUT(vec3) next, EK_OUT(vec3) vNext) {
     next = x;
     vNext = v;
-    if (viewIntegrator(params) != EK_RAY_VERLET) return false;
+    if (viewIntegrator(params) != EK_RAY_VERLET || !anyEmptyBricks()) return false;
     const int brick = emptyBrickAt(worldToVolumeIndex(x));
     if (brick < 0) return false;
     const float speed = length(v);  // rayStepStart's w for Verlet
@@ -355,6 +357,9 @@ CurvedRay curvedRayStart(vec3 entry, vec3 dir, bool shade, float onSurface, int 
 int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
                      EK_INOUT(KeptReflection) second) {
     int status = EK_RAY_ENDED;
+    // Whether a step moved the ray: its exit direction is normalize(v) after its last step, taken
+    // once on the way out rather than at every step (the same floats: the same v).
+    bool moved = false;
     for (; r.steps < r.maxSteps; ++r.steps) {
         vec3 next = r.x;
         vec3 vNext = r.v;
@@ -445,7 +450,7 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
         }
         r.x = next;
         r.v = vNext;
-        r.exitDir = normalize(r.v);
+        moved = true;
         if (receiver >= 0) {  // opaque: nothing behind it shows
             if (r.shade && !receiverDeferred(receiver, r.x, front, r.transmittance))
                 r.radiance += r.transmittance * receiverRadiance(receiver, r.x, front);
@@ -458,6 +463,7 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
             break;
         }
     }
+    if (moved) r.exitDir = normalize(r.v);
     return status;
 }
 
