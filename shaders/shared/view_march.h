@@ -277,6 +277,22 @@ bool emptyVerletStep(vec3 x, vec3 v, float h, EK_OUT(vec3) next, EK_OUT(vec3) vN
 }
 #endif
 
+// One step of the ray equation of length h from (x, v) (viewIntegrator, ray_equation.h) into
+// (next, vNext); `empty` where it was taken straight through an empty brick (CPU twin,
+// EK_SKIP_EMPTY_SPACE). False where the medium is degenerate: nothing more to trace.
+bool curvedRayStep(vec3 x, vec3 v, float h, EK_OUT(vec3) next, EK_OUT(vec3) vNext,
+                   EK_OUT(bool) empty) {
+    next = x;
+    vNext = v;
+    empty = false;
+#ifdef EK_SKIP_EMPTY_SPACE
+    empty = emptyVerletStep(x, v, h, next, vNext);
+    if (empty) return true;
+#endif
+    return rayAdvance(viewIntegrator(params), next, vNext, h,
+                      rayStepStart(viewIntegrator(params), x, v));
+}
+
 // A reflection a view ray hands back to be traced through the volume: from origin (xyz) along
 // unit dir (xyz) with momentum dir × n (n in dir.w), seen with weight (rgb; 0: none).
 struct KeptReflection {
@@ -360,19 +376,27 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
     // Whether a step moved the ray: its exit direction is normalize(v) after its last step, taken
     // once on the way out rather than at every step (the same floats: the same v).
     bool moved = false;
+    // The next step, taken ahead (see below) where this one goes on.
+    bool ahead = false;
+    vec3 aheadNext = r.x;
+    vec3 aheadV = r.v;
+    bool aheadTaken = false;
+    bool aheadEmpty = false;
     for (; r.steps < r.maxSteps; ++r.steps) {
         vec3 next = r.x;
         vec3 vNext = r.v;
-#ifdef EK_SKIP_EMPTY_SPACE
-        const bool empty = emptyVerletStep(r.x, r.v, r.h, next, vNext);
-        if (!empty && !rayAdvance(viewIntegrator(params), next, vNext, r.h,
-                                  rayStepStart(viewIntegrator(params), r.x, r.v)))
-            break;  // a degenerate n; nothing more to trace
-#else
-        if (!rayAdvance(viewIntegrator(params), next, vNext, r.h,
-                        rayStepStart(viewIntegrator(params), r.x, r.v)))
-            break;  // a degenerate n; nothing more to trace
-#endif
+        bool empty = false;
+        bool taken;
+        if (ahead) {
+            next = aheadNext;
+            vNext = aheadV;
+            taken = aheadTaken;
+            empty = aheadEmpty;
+            ahead = false;
+        } else {
+            taken = curvedRayStep(r.x, r.v, r.h, next, vNext, empty);
+        }
+        if (!taken) break;  // a degenerate n; nothing more to trace
         const vec3 delta = next - r.x;
         float s = length(delta);
         if (!(s > 0.0f)) break;  // a degenerate n; nothing more to trace
@@ -392,6 +416,13 @@ int curvedRayAdvance(EK_INOUT(CurvedRay) r, EK_INOUT(KeptReflection) first,
         if (receiver >= 0) {
             next = receiverHitPoint(receiver, r.x, next, tHit);
             s *= tHit;
+        }
+        // Where the ray goes on from here, its next step depends on nothing the shading below
+        // does: taken now, its chain of dependent operations (each step's ∇n sample waits on the
+        // step before) runs beside this step's shading instead of after it. The same floats.
+        if (!leaves && receiver < 0 && r.steps + 1 < r.maxSteps) {
+            aheadTaken = curvedRayStep(next, vNext, r.h, aheadNext, aheadV, aheadEmpty);
+            ahead = true;
         }
         if (r.shade) {
             const vec3 mid = 0.5f * (r.x + next);
