@@ -617,12 +617,16 @@ int straightRayAdvance(EK_INOUT(StraightRay) r) {
 // marches of accumulateStep) took llvmpipe 47 s to compile view.comp (link and the first
 // dispatch, where it generates code), 221 s with EK_HARDWARE_TRILINEAR; one takes 16 s and 69 s
 // (BENCHMARKS.md, "Compiling the shaders on llvmpipe").
-vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
+//
+// `curved` is curvedRays(params), passed in so that a CPU twin can compile a copy of the trace for
+// each kind of ray with the other kind's code left out (render/view_pass_cpu.cpp): integrateViewRay
+// passes it.
+vec3 integrateViewRayOf(vec3 origin, vec3 dir, bool curved, EK_OUT(vec3) transmittance) {
     transmittance = vec3(1.0f);
     vec3 radiance = vec3(0.0f);
     const vec2 span = intersectVolume(origin, dir);
     if (!(span.x < span.y)) return environmentRadiance(dir);
-    if (curvedRays(params)) {
+    if (curved) {
         KeptReflection first, second;  // the camera ray's pass keeps them
         first.weight = second.weight = vec4(0.0f);
         first.origin = second.origin = first.dir = second.dir = vec4(0.0f);
@@ -657,6 +661,10 @@ vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
     return r.radiance + r.transmittance * environmentRadiance(dir);
 }
 
+vec3 integrateViewRay(vec3 origin, vec3 dir, EK_OUT(vec3) transmittance) {
+    return integrateViewRayOf(origin, dir, curvedRays(params), transmittance);
+}
+
 // The unit direction of the viewing ray through pixel (px, py)'s centre, row 0 at the top
 // (core/camera.h projectToImage is its inverse).
 vec3 pixelRayDirection(int px, int py) {
@@ -669,11 +677,16 @@ vec3 pixelRayDirection(int px, int py) {
 }
 
 // One pixel: a ray through the pixel's centre; rgb radiance, alpha the mean transmittance.
-vec4 renderPixel(int px, int py) {
+// `curved`: curvedRays(params) (integrateViewRayOf).
+vec4 renderPixelOf(int px, int py, bool curved) {
     const vec3 dir = pixelRayDirection(px, py);
     vec3 transmittance;
-    const vec3 radiance = integrateViewRay(vec3(params.cameraOrigin), dir, transmittance);
+    const vec3 radiance = integrateViewRayOf(vec3(params.cameraOrigin), dir, curved, transmittance);
     return vec4(radiance, (transmittance.x + transmittance.y + transmittance.z) / 3.0f);
+}
+
+vec4 renderPixel(int px, int py) {
+    return renderPixelOf(px, py, curvedRays(params));
 }
 
 // One channel of a pixel under dispersion (viewChannel(params) = c ≥ 0, params holding channel
