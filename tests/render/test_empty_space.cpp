@@ -3,7 +3,9 @@
 // gives the picture of every step taken in full, to the bit.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <string>
@@ -79,6 +81,54 @@ TEST_CASE("empty bricks: a voxel that holds something keeps every brick whose sa
         std::vector<float> other(voxels, 0.0f);
         other[at(9, 5, 1)] = 3.0f;
         CHECK(findEmptyBricks(res, {field.data(), other.data()}, nullptr).emptyCount() == 17);
+    }
+}
+
+TEST_CASE("empty bricks are the bricks whose voxels and one more on every side hold nothing",
+          "[empty_space]") {
+    // Against the definition, brick by brick, on volumes whose edges are not whole bricks, with
+    // something in a few voxels (near faces, edges and corners of bricks as often as not).
+    uint32_t h = 12345u;
+    const auto next = [&h](uint32_t n) {
+        h = h * 1664525u + 1013904223u;
+        return (h >> 8) % n;
+    };
+    for (int trial = 0; trial < 40; ++trial) {
+        const glm::ivec3 res(int(next(14)) + 1, int(next(14)) + 1, int(next(14)) + 1);
+        const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
+        std::vector<float> field(voxels, 0.0f);
+        std::vector<glm::vec4> gradient(voxels, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        const int filled = int(next(6));
+        for (int k = 0; k < filled; ++k) {
+            const size_t i = next(uint32_t(voxels));
+            if (next(2))
+                field[i] = 1.0f;
+            else
+                gradient[i].x = 0.5f;
+        }
+        const bool curved = trial % 2 == 1;
+        const EmptyBricks b =
+            findEmptyBricks(res, {field.data()}, curved ? gradient.data() : nullptr);
+        const auto occupied = [&](int x, int y, int z) {
+            const size_t i = (size_t(z) * size_t(res.y) + size_t(y)) * size_t(res.x) + size_t(x);
+            return field[i] != 0.0f || (curved && gradient[i].x != 0.0f);
+        };
+        INFO("trial " << trial << ", " << res.x << "×" << res.y << "×" << res.z);
+        REQUIRE(b.count == (res + glm::ivec3(3)) / 4);
+        int wrong = 0;
+        for (int bz = 0; bz < b.count.z; ++bz)
+            for (int by = 0; by < b.count.y; ++by)
+                for (int bx = 0; bx < b.count.x; ++bx) {
+                    bool any = false;
+                    for (int z = std::max(4 * bz - 1, 0); z <= std::min(4 * bz + 4, res.z - 1); ++z)
+                        for (int y = std::max(4 * by - 1, 0); y <= std::min(4 * by + 4, res.y - 1);
+                             ++y)
+                            for (int x = std::max(4 * bx - 1, 0);
+                                 x <= std::min(4 * bx + 4, res.x - 1); ++x)
+                                any = any || occupied(x, y, z);
+                    wrong += b.empty[brickIndex(b, bx, by, bz)] != (any ? 0 : 1);
+                }
+        CHECK(wrong == 0);
     }
 }
 
