@@ -76,6 +76,7 @@ void ConstantBricks::add(int slot, const void* volume) {
                 for (int bx = 0; bx < count.x; ++bx) {
                     // The corners i0 of the brick and the voxels i0 + 1 beside them, clamped.
                     const glm::ivec3 lo = glm::ivec3(bx, by, bz) * edge;
+                    if (leftOut_ && (*leftOut_)[brickIndex(lo)]) continue;
                     const glm::ivec3 hi = glm::min(lo + edge, last);
                     const size_t firstVoxel = (size_t(lo.z) * size_t(resolution.y) + size_t(lo.y)) *
                                                   size_t(resolution.x) +
@@ -91,6 +92,12 @@ void ConstantBricks::add(int slot, const void* volume) {
                     values[size_t(column[slot]) * mask.size() + b] = first;
                 }
     });
+}
+
+void ConstantBricks::leaveOut(const std::vector<uint8_t>& bricks) {
+    if (columns > 0 || bricks.size() != mask.size())
+        throw Error("constant bricks", "bricks left out after a slot, or of another volume");
+    leftOut_ = &bricks;
 }
 
 void ConstantBricks::addField(int slot, const float* field) {

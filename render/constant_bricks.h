@@ -40,6 +40,11 @@ struct ConstantBricks {
     // (+0 and −0 differ), and a brick holding a NaN or an infinity is never constant.
     void addField(int slot, const float* values);
     void addVolume(int slot, const glm::vec4* values);
+    // Bricks (1 in `bricks`, x fastest, then y, then z) whose values need not be found: slots
+    // added after this leave them not constant, and their samples fetch the eight corners (the
+    // same floats). The view leaves out its empty bricks, where it takes no sample of its own
+    // brick. Before any slot is added; `bricks` must outlive the adds.
+    void leaveOut(const std::vector<uint8_t>& bricks);
 
     size_t brickIndex(glm::ivec3 corner) const {
         const glm::ivec3 b = corner >> kConstantBrickShift;
@@ -49,6 +54,7 @@ struct ConstantBricks {
     size_t constantCount(int slot) const;
 
 private:
+    const std::vector<uint8_t>* leftOut_ = nullptr;
     // A slot of kWords 32-bit words a voxel (1: a field; 4: a vec4), compared by their bits.
     template <int kWords>
     void add(int slot, const void* volume);

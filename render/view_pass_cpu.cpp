@@ -112,15 +112,34 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
         }
         if (options.constantBricks) {
             constant.emplace(glm::ivec3(p.resolution));
-            for (size_t s = 0; s < fields.size(); ++s) constant->addField(int(s), fields[s]);
-            for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
-                constant->addVolume(EK_MAX_MATERIALS + int(l), light.lightTransmittance[l]);
-            if (shared::curvedRays(p)) constant->addVolume(EK_GRADIENT_SLOT, grad.data());
-            if (shared::readsFluence(p)) {
-                constant->addVolume(EK_FLUENCE_SLOT, light.fluence);
-                constant->addVolume(EK_FLUENCE_DIRECTION_SLOT, light.direction);
+            // The view's steps sample no empty brick's own values.
+            if (options.skipEmptySpace) constant->leaveOut(bricks.empty);
+            std::vector<int> slots;
+            for (size_t s = 0; s < fields.size(); ++s) {
+                constant->addField(int(s), fields[s]);
+                slots.push_back(int(s));
             }
-            kernel.constantBricks = &*constant;
+            const auto addVolume = [&](int slot, const glm::vec4* volume) {
+                constant->addVolume(slot, volume);
+                slots.push_back(slot);
+            };
+            for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
+                addVolume(EK_MAX_MATERIALS + int(l), light.lightTransmittance[l]);
+            if (shared::curvedRays(p)) addVolume(EK_GRADIENT_SLOT, grad.data());
+            if (shared::readsFluence(p)) {
+                addVolume(EK_FLUENCE_SLOT, light.fluence);
+                addVolume(EK_FLUENCE_DIRECTION_SLOT, light.direction);
+            }
+            // Every sample pays for the lookup; only the samples in constant bricks gain. Where no
+            // slot is constant over an eighth of the bricks the view samples, the lookups cost
+            // more than they save (houdini_smoke's view: 4 %, BENCHMARKS.md), and the kernel gets
+            // none: the same floats either way.
+            const size_t sampled = bricks.empty.empty()
+                                       ? constant->mask.size()
+                                       : constant->mask.size() - bricks.emptyCount();
+            bool pays = false;
+            for (int slot : slots) pays = pays || constant->constantCount(slot) * 8 >= sampled;
+            kernel.constantBricks = pays ? &*constant : nullptr;
         }
         for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
             kernel.lights[l] = light.lightTransmittance[l];

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -70,6 +71,21 @@ TEST_CASE("constant bricks: a brick is constant where every voxel its samples re
         CHECK(!constantAt(b, 0, 2, 1, 1));
         CHECK(!constantAt(b, 0, 2, 1, 2));
         CHECK(b.constantCount(0) == 16);
+    }
+    SECTION("bricks left out are never constant; the others are found as before") {
+        std::vector<uint8_t> leftOut(18, 0);
+        leftOut[5] = leftOut[17] = 1;
+        ConstantBricks b(res);
+        b.leaveOut(leftOut);
+        b.addField(0, field.data());
+        CHECK(b.constantCount(0) == 16);
+        CHECK(!constantAt(b, 0, 2, 1, 0));  // brick 5
+        CHECK(!constantAt(b, 0, 2, 1, 2));  // brick 17
+        CHECK(constantAt(b, 0, 1, 1, 0));
+        // Only before a slot is added, and only for a volume of as many bricks.
+        CHECK_THROWS(b.leaveOut(leftOut));
+        ConstantBricks other(res);
+        CHECK_THROWS(other.leaveOut(std::vector<uint8_t>(17, 0)));
     }
     SECTION("NaN and infinities are never constant") {
         std::fill(field.begin(), field.end(), std::numeric_limits<float>::quiet_NaN());
