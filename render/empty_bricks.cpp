@@ -33,7 +33,7 @@ size_t EmptyBricks::emptyCount() const {
 // hold something (each voxel read once at most), then whether a brick whose own voxels are empty
 // has anything in the voxels one beyond its faces. Those lie in its 26 neighbours, so where every
 // neighbour's own voxels are empty too the brick is empty without reading them; only bricks beside
-// something read their shell. The view of houdini_smoke (111×222×112) spent 7-13 ms on 2 cores
+// something read their shell. The view of houdini_smoke (111×222×112) spent 6.8-14.0 ms on 2 cores
 // here with a byte a voxel and every brick's 6³ voxels read (BENCHMARKS.md).
 EmptyBricks findEmptyBricks(glm::ivec3 res, const std::vector<const float*>& fields,
                             const glm::vec4* gradient) {

@@ -17,7 +17,7 @@
 // (tests/render/test_view_isa.cpp). The AVX2 copy took 0.85× the time of the view at 128³
 // (BENCHMARKS.md, "AVX2"). It is two copies, one for straight rays and one for curved, each with
 // the other kind's code left out (renderPixelOf's `curved` a constant): the Houdini smoke's
-// straight rays took 0.91× the time of one copy with both (BENCHMARKS.md). Not under the
+// straight rays took 0.91-0.93× the time of one copy with both (BENCHMARKS.md). Not under the
 // sanitizers, where the flattened copies would take many minutes to compile, nor off x86-64.
 #if defined(__x86_64__) && defined(__GNUC__) && defined(__OPTIMIZE__) && \
     !defined(__SANITIZE_ADDRESS__)
@@ -28,10 +28,12 @@ namespace eikon {
 namespace {
 
 // The pixels of a tile; `curved` is curvedRays(params), a constant where the copies below call it.
-#define EK_RENDER_TILE_PIXELS(curved)                                  \
-    for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)     \
-        for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) \
-    image.at(x, y) = kernel.renderPixelOf(x, y, curved)
+#define EK_RENDER_TILE_PIXELS(curved)                                    \
+    for (int y = tile.rows().begin(); y != tile.rows().end(); ++y) {     \
+        for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) { \
+            image.at(x, y) = kernel.renderPixelOf(x, y, curved);         \
+        }                                                                \
+    }
 
 void renderTileBaseline(shared::ViewKernelCpu& kernel, Image& image,
                         const tbb::blocked_range2d<int>& tile) {
