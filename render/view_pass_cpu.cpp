@@ -119,21 +119,13 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
             // glass view at 128³ took 4597 -> 5086 ms on one core with those left out too.
             const bool leaveOutEmpty = options.skipEmptySpace && !shared::curvedRays(p);
             if (leaveOutEmpty) constant->leaveOut(bricks.empty);
-            std::vector<int> slots;
-            for (size_t s = 0; s < fields.size(); ++s) {
-                constant->addField(int(s), fields[s]);
-                slots.push_back(int(s));
-            }
-            const auto addVolume = [&](int slot, const glm::vec4* volume) {
-                constant->addVolume(slot, volume);
-                slots.push_back(slot);
-            };
+            for (size_t s = 0; s < fields.size(); ++s) constant->addField(int(s), fields[s]);
             for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
-                addVolume(EK_MAX_MATERIALS + int(l), light.lightTransmittance[l]);
-            if (shared::curvedRays(p)) addVolume(EK_GRADIENT_SLOT, grad.data());
+                constant->addVolume(EK_MAX_MATERIALS + int(l), light.lightTransmittance[l]);
+            if (shared::curvedRays(p)) constant->addVolume(EK_GRADIENT_SLOT, grad.data());
             if (shared::readsFluence(p)) {
-                addVolume(EK_FLUENCE_SLOT, light.fluence);
-                addVolume(EK_FLUENCE_DIRECTION_SLOT, light.direction);
+                constant->addVolume(EK_FLUENCE_SLOT, light.fluence);
+                constant->addVolume(EK_FLUENCE_DIRECTION_SLOT, light.direction);
             }
             // Every sample pays for the lookup; only the samples in constant bricks gain. Where no
             // slot is constant over an eighth of the bricks the view samples, the lookups cost
@@ -142,7 +134,9 @@ Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>&
             const size_t sampled =
                 constant->mask.size() - (leaveOutEmpty ? bricks.emptyCount() : size_t(0));
             bool pays = false;
-            for (int slot : slots) pays = pays || constant->constantCount(slot) * 8 >= sampled;
+            for (int slot = 0; slot < kVolumeSlotCount; ++slot)  // slots not added count 0
+                pays = pays || (constant->column[slot] >= 0 &&
+                                constant->constantCount(slot) * 8 >= sampled);
             kernel.constantBricks = pays ? &*constant : nullptr;
         }
         for (size_t l = 0; l < light.lightTransmittance.size(); ++l)
