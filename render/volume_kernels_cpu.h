@@ -166,6 +166,14 @@ struct ViewKernelCpu : VolumeAccessCpu {
         const int i = (b.z * emptyBrickCount.y + b.y) * emptyBrickCount.x + b.x;
         return emptyBricks[i] ? i : -1;
     }
+    // Where the ray o + d·t (volume index space) leaves the run of empty bricks it is in at t
+    // (render/empty_bricks.h).
+    float emptyRunEnd(vec3 o, vec3 d, float t) const {
+        return eikon::emptyRunEnd(emptyBricks, emptyBrickCount, o, d, t);
+    }
+    // Whether every sample a view ray takes may be shaded at once: all but the interleaved view
+    // (viewSampleReady).
+    bool viewSamplesAllReady() const { return window.axis < 0; }
 
     // clang-format off
 #include "shaders/shared/environment.h"

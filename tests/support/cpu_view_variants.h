@@ -45,11 +45,15 @@ struct ViewVariantCase {
     float ior;         // > 0: the first material's, to bend the rays
     int perSide;       // > 0: photons per side
     float fogTop;      // < 1e9: the first source (a box of fog) ends at this height
+    float radius = 0;  // > 0: the first source's (a sphere's), its falloff a third of it
 };
 
 inline std::vector<ViewVariantCase> viewVariantCases() {
     return {
         {"straight rays: a fog sphere in a box, light volumes", "fog_sphere_spot", 0.0f, 0, 1e9f},
+        // Rays cross long runs of empty bricks, which straight rays skip whole.
+        {"straight rays: a small fog sphere in empty space", "fog_sphere_spot", 0.0f, 0, 1e9f,
+         0.3f},
         {"curved rays through a graded sphere", "fog_sphere_spot", 1.3f, 0, 1e9f},
         // The ball sits half in a layer of fog, half in empty space; its rays reflect, and the
         // camera's rays end on the floor.
@@ -67,6 +71,10 @@ inline Scene loadViewVariantScene(const ViewVariantCase& c) {
     scene.render.height = 30;
     if (c.ior > 0.0f) scene.materials[0].ior = c.ior;
     if (c.fogTop < 1e9f) scene.sources[0].boxMax.y = c.fogTop;
+    if (c.radius > 0.0f) {
+        scene.sources[0].radius = c.radius;
+        scene.sources[0].falloff = c.radius / 3.0f;
+    }
     if (c.perSide > 0) setTransportSetting(scene, "photons", "per_side", c.perSide);
     return scene;
 }
