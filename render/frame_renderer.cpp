@@ -34,9 +34,9 @@ bool useHardwareTrilinear(const GlContext& gl) {
 // How the CPU twin's view runs, each choice to the same bits: it steps through empty space
 // without sampling it (render/empty_bricks.h; EIKON_SKIP_EMPTY_SPACE=0 takes every step in full)
 // runs its AVX2 copy where the processor has one (EIKON_CPU_AVX2=0 runs the baseline x86-64
-// copy) and takes samples in constant bricks without fetching their corners
-// (render/constant_bricks.h; EIKON_CONSTANT_BRICKS=0 fetches them), the switches there to measure
-// what each gains.
+// copy), its AVX-512 copy where it has that too (EIKON_CPU_AVX512=0 runs the AVX2 copy) and takes
+// samples in constant bricks without fetching their corners (render/constant_bricks.h;
+// EIKON_CONSTANT_BRICKS=0 fetches them), the switches there to measure what each gains.
 ViewCpuOptions viewCpuOptions() {
     const auto off = [](const char* name) {
         const char* env = std::getenv(name);
@@ -45,6 +45,7 @@ ViewCpuOptions viewCpuOptions() {
     ViewCpuOptions options;
     options.skipEmptySpace = !off("EIKON_SKIP_EMPTY_SPACE");
     options.avx2 = !off("EIKON_CPU_AVX2");
+    options.avx512 = !off("EIKON_CPU_AVX512");
     options.constantBricks = constantBricksEnabled();
     return options;
 }

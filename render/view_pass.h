@@ -42,6 +42,9 @@ struct ViewCpuOptions {
     // The per-pixel code compiled for AVX2 where the processor has it (viewCpuHasAvx2); false
     // runs the baseline x86-64 copy (to measure, and to test that both give the same bytes).
     bool avx2 = true;
+    // Where the processor has AVX-512 too (viewCpuHasAvx512), the copy compiled for it, whose 32
+    // vector registers hold what the AVX2 copy spills; false runs the AVX2 copy.
+    bool avx512 = true;
     // Samples in bricks where their volume holds one value are taken without fetching the
     // corners (render/constant_bricks.h); false fetches every corner.
     bool constantBricks = true;
@@ -50,6 +53,9 @@ struct ViewCpuOptions {
 // Whether this build and processor have the view's AVX2 copy (x86-64, optimized, not under the
 // sanitizers). Dispersion (three rays a pixel) always runs the baseline copy.
 bool viewCpuHasAvx2();
+// Whether this build and processor have the view's AVX-512 copy (AVX-512 F and VL, as
+// viewCpuHasAvx2 otherwise).
+bool viewCpuHasAvx512();
 
 Image renderViewCpu(const ViewSetup& setup, const std::vector<const DenseGrid*>& slotGrids,
                     const TransportOutputCpu& light, const std::vector<glm::vec4>& gradient = {},

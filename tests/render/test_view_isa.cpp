@@ -1,5 +1,6 @@
-// The CPU twin's view compiled twice (render/view_pass_cpu.cpp): the AVX2 copy, which runs where
-// the processor has AVX2, must give the baseline x86-64 copy's picture to the bit.
+// The CPU twin's view compiled three times (render/view_pass_cpu.cpp): the AVX2 copy, which runs
+// where the processor has AVX2, and the AVX-512 copy, where it has AVX-512 F and VL too, must give
+// the baseline x86-64 copy's picture to the bit.
 #include <catch2/catch.hpp>
 
 #include "render/view_pass.h"
@@ -15,5 +16,17 @@ TEST_CASE("the view's AVX2 copy gives the baseline copy's picture, to the bit", 
         INFO(c.name);
         const eikon::Scene scene = eikon::test::loadViewVariantScene(c);
         CHECK(eikon::test::switchKeepsEveryByte(scene, "EIKON_CPU_AVX2"));
+    }
+}
+
+TEST_CASE("the view's AVX-512 copy gives the AVX2 copy's picture, to the bit", "[view][isa]") {
+    if (!eikon::viewCpuHasAvx512())
+        WARN(
+            "no AVX-512 copy here (no AVX-512 F and VL, not x86-64, or a sanitizer build): both "
+            "renders below run the same copy");
+    for (const eikon::test::ViewVariantCase& c : eikon::test::viewVariantCases()) {
+        INFO(c.name);
+        const eikon::Scene scene = eikon::test::loadViewVariantScene(c);
+        CHECK(eikon::test::switchKeepsEveryByte(scene, "EIKON_CPU_AVX512"));
     }
 }
