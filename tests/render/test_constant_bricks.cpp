@@ -228,9 +228,5 @@ TEST_CASE("a grey κ's one exp and the isotropic phase function give the per-cha
 
 TEST_CASE("constant bricks give the pictures and the photons of every corner fetched, to the bit",
           "[constant_bricks][view]") {
-    for (const eikon::test::ViewVariantCase& c : eikon::test::viewVariantCases()) {
-        INFO(c.name);
-        const eikon::Scene scene = eikon::test::loadViewVariantScene(c);
-        CHECK(eikon::test::switchKeepsEveryByte(scene, "EIKON_CONSTANT_BRICKS"));
-    }
+    CHECK(eikon::test::casesChangedBySwitch("EIKON_CONSTANT_BRICKS") == std::vector<std::string>{});
 }

@@ -26,6 +26,18 @@ size_t brickIndex(const EmptyBricks& b, int x, int y, int z) {
     return (size_t(z) * size_t(b.count.y) + size_t(y)) * size_t(b.count.x) + size_t(x);
 }
 
+// A seeded linear congruential sequence: the same random cases on every machine.
+struct Sequence {
+    uint32_t h;
+    uint32_t next(uint32_t n) {  // in [0, n)
+        h = h * 1664525u + 1013904223u;
+        return (h >> 8) % n;
+    }
+    float uniform(float lo, float hi) {
+        return lo + (hi - lo) * float(next(1u << 20)) / float(1u << 20);
+    }
+};
+
 }  // namespace
 
 TEST_CASE("empty bricks: a voxel that holds something keeps every brick whose samples read it",
@@ -91,11 +103,8 @@ TEST_CASE("empty bricks are the bricks whose voxels and one more on every side h
           "[empty_space]") {
     // Against the definition, brick by brick, on volumes whose edges are not whole bricks, with
     // something in a few voxels (near faces, edges and corners of bricks as often as not).
-    uint32_t h = 12345u;
-    const auto next = [&h](uint32_t n) {
-        h = h * 1664525u + 1013904223u;
-        return (h >> 8) % n;
-    };
+    Sequence random{12345u};
+    const auto next = [&random](uint32_t n) { return random.next(n); };
     for (int trial = 0; trial < 40; ++trial) {
         const glm::ivec3 res(int(next(14)) + 1, int(next(14)) + 1, int(next(14)) + 1);
         const size_t voxels = size_t(res.x) * size_t(res.y) * size_t(res.z);
@@ -138,14 +147,9 @@ TEST_CASE("empty bricks are the bricks whose voxels and one more on every side h
 TEST_CASE("a ray's run of empty bricks ends where it enters a brick that is not empty",
           "[empty_space]") {
     // Against the bricks read off the ray at 1/1000 of a brick apart, on random grids and rays.
-    uint32_t h = 777u;
-    const auto next = [&h](uint32_t n) {
-        h = h * 1664525u + 1013904223u;
-        return (h >> 8) % n;
-    };
-    const auto uniform = [&next](float lo, float hi) {
-        return lo + (hi - lo) * float(next(1u << 20)) / float(1u << 20);
-    };
+    Sequence random{777u};
+    const auto next = [&random](uint32_t n) { return random.next(n); };
+    const auto uniform = [&random](float lo, float hi) { return random.uniform(lo, hi); };
     int runs = 0;
     for (int trial = 0; trial < 400; ++trial) {
         const glm::ivec3 count(int(next(6)) + 1, int(next(6)) + 1, int(next(6)) + 1);
@@ -188,9 +192,6 @@ TEST_CASE("a ray's run of empty bricks ends where it enters a brick that is not 
 
 TEST_CASE("skipping empty space gives the picture of every step taken in full, to the bit",
           "[empty_space][view]") {
-    for (const eikon::test::ViewVariantCase& c : eikon::test::viewVariantCases()) {
-        INFO(c.name);
-        const eikon::Scene scene = eikon::test::loadViewVariantScene(c);
-        CHECK(eikon::test::switchKeepsEveryByte(scene, "EIKON_SKIP_EMPTY_SPACE"));
-    }
+    CHECK(eikon::test::casesChangedBySwitch("EIKON_SKIP_EMPTY_SPACE") ==
+          std::vector<std::string>{});
 }

@@ -79,4 +79,13 @@ inline Scene loadViewVariantScene(const ViewVariantCase& c) {
     return scene;
 }
 
+// The names of the cases whose pictures switch `name` set to "0" changes (switchKeepsEveryByte);
+// empty where it keeps every byte of every case.
+inline std::vector<std::string> casesChangedBySwitch(const char* name) {
+    std::vector<std::string> changed;
+    for (const ViewVariantCase& c : viewVariantCases())
+        if (!switchKeepsEveryByte(loadViewVariantScene(c), name)) changed.push_back(c.name);
+    return changed;
+}
+
 }  // namespace eikon::test
